@@ -105,8 +105,11 @@ where
     }
 
     fn relative_eq(&self, other: &Self, epsilon: V::Epsilon, max_relative: V::Epsilon) -> bool {
-        self.position.relative_eq(&other.position, epsilon, max_relative)
-            && self.velocity.relative_eq(&other.velocity, epsilon, max_relative)
+        self.position
+            .relative_eq(&other.position, epsilon, max_relative)
+            && self
+                .velocity
+                .relative_eq(&other.velocity, epsilon, max_relative)
     }
 }
 
@@ -135,7 +138,10 @@ mod tests {
         let a = Spring::<f64>::new(1.0, 100.0, 10.0).unwrap();
         let b = Spring::<f64>::new(1.0, 100.0 + 1e-13, 10.0).unwrap();
         assert_relative_eq!(a, b, max_relative = 1e-14);
-        assert!(approx::relative_ne!(a, Spring::new(1.0, 101.0, 10.0).unwrap()));
+        assert!(approx::relative_ne!(
+            a,
+            Spring::new(1.0, 101.0, 10.0).unwrap()
+        ));
         assert_ulps_eq!(a.transition(0.1), b.transition(0.1), max_ulps = 64);
         assert!(approx::abs_diff_ne!(a.transition(0.1), a.transition(0.2)));
         let s = SpringState::new(1.0_f64, 2.0);

@@ -216,8 +216,7 @@ fn band(b: f64, w2: f64, w: f64, t: f64, z: f64) -> Coefficients {
         // 1 − f0 = (1 − e^{−x}) − x·e^{−x} − e^{−x}·((C − 1) + x·(S − 1)), x = bt. Used only
         // for ρt > 1 (so x ≳ 1 and ω > 0), where the first two terms differ by a factor
         // ≥ e − 1 and the last is ≤ BAND_Z in size: only a small constant factor is lost.
-        let one_minus_f0 =
-            -exp_m1(-bt) - decay.apply(bt) - decay.apply(c_minus_1 + bt * s_minus_1);
+        let one_minus_f0 = -exp_m1(-bt) - decay.apply(bt) - decay.apply(c_minus_1 + bt * s_minus_1);
         (one_minus_f0, one_minus_f0 / w2)
     })
 }

@@ -1,9 +1,9 @@
 //! Validated spring parameters and their parametrisations.
 
+use crate::Scalar;
 use crate::error::{Parameter, SpringError};
 use crate::kernel;
 use crate::transition::Transition;
-use crate::Scalar;
 
 /// `x` with `(1 + x)·e^{−x} = 1/2`: a critically damped spring from rest covers half the
 /// distance to its target at `t = x/ω`.
@@ -143,16 +143,29 @@ impl<T: Scalar> Spring<T> {
     /// The transition's coefficients over `t`, evaluated in `f64` from the exact parameters.
     #[inline]
     fn coefficients(&self, t: f64) -> kernel::Coefficients {
-        let (m, k, c) = (self.mass.to_f64(), self.stiffness.to_f64(), self.damping.to_f64());
+        let (m, k, c) = (
+            self.mass.to_f64(),
+            self.stiffness.to_f64(),
+            self.damping.to_f64(),
+        );
         let omega_squared = k / m;
-        kernel::coefficients(c / m / 2.0, omega_squared, crate::math::sqrt(omega_squared), t)
+        kernel::coefficients(
+            c / m / 2.0,
+            omega_squared,
+            crate::math::sqrt(omega_squared),
+            t,
+        )
     }
 
     /// For constants known to be valid (presets): falls back to [`Spring::smooth`]'s
     /// parameters could they ever be refused, so presets never panic.
     fn preset(mass: f64, stiffness: f64, damping: f64) -> Self {
-        Self::new(T::from_f64(mass), T::from_f64(stiffness), T::from_f64(damping))
-            .unwrap_or_else(|_| Self::critical_unit_mass(T::from_f64(4.0 * core::f64::consts::PI)))
+        Self::new(
+            T::from_f64(mass),
+            T::from_f64(stiffness),
+            T::from_f64(damping),
+        )
+        .unwrap_or_else(|_| Self::critical_unit_mass(T::from_f64(4.0 * core::f64::consts::PI)))
     }
 
     /// Critically damped, unit mass, natural frequency `omega` (validated by the caller).
@@ -179,7 +192,10 @@ impl<T: Scalar> Spring<T> {
     /// assert_eq!(spring.damping_ratio(), Some(0.5));
     /// # Ok::<(), sprung::SpringError>(())
     /// ```
-    pub fn from_natural_frequency(natural_frequency: T, damping_ratio: T) -> Result<Self, SpringError> {
+    pub fn from_natural_frequency(
+        natural_frequency: T,
+        damping_ratio: T,
+    ) -> Result<Self, SpringError> {
         let omega = non_negative(natural_frequency, Parameter::NaturalFrequency)?;
         let zeta = non_negative(damping_ratio, Parameter::DampingRatio)?;
         Self::new(T::one(), omega * omega, (zeta + zeta) * omega)
@@ -566,8 +582,16 @@ impl<T: Scalar> Spring<T> {
     #[inline]
     #[must_use]
     pub fn transition(&self, dt: T) -> Transition<T> {
-        let dt = if dt.is_finite() && dt > T::zero() { dt } else { T::zero() };
-        Transition::from_coefficients(dt, self.damping / self.mass, &self.coefficients(dt.to_f64()))
+        let dt = if dt.is_finite() && dt > T::zero() {
+            dt
+        } else {
+            T::zero()
+        };
+        Transition::from_coefficients(
+            dt,
+            self.damping / self.mass,
+            &self.coefficients(dt.to_f64()),
+        )
     }
 
     /// The exact transition over `dt` seconds, refusing an invalid `dt`.

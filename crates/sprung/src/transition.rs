@@ -2,8 +2,8 @@
 
 use core::ops::{Add, Mul, Sub};
 
-use crate::kernel::Coefficients;
 use crate::Scalar;
+use crate::kernel::Coefficients;
 
 /// A value a spring can move: anything closed under `+`, `−` and scaling by `T`.
 ///

@@ -1,7 +1,10 @@
 //! Every matrix entry against the 320-bit reference: within 8·u·cond, where `cond` is what any
 //! algorithm inherits from rounding `b = c/(2m)`, `ω² = k/m` and `t` (plus the final rounding).
 
-#![allow(clippy::float_cmp, reason = "exact special cases are asserted bit for bit")]
+#![allow(
+    clippy::float_cmp,
+    reason = "exact special cases are asserted bit for bit"
+)]
 
 mod reference;
 
@@ -108,8 +111,16 @@ fn error_ratios<T: Scalar>(case: &Case) -> Result<(f64, f64), String> {
     let to_f64 = |a: [[T; 2]; 2]| a.map(|row| row.map(Scalar::to_f64));
     let matrix = to_f64(transition.matrix());
     let increment = to_f64(transition.increment_matrix());
-    if matrix.iter().flatten().chain(increment.iter().flatten()).any(|x| !x.is_finite()) {
-        return Err(format!("{}: non-finite entry {matrix:?} {increment:?}", case.name));
+    if matrix
+        .iter()
+        .flatten()
+        .chain(increment.iter().flatten())
+        .any(|x| !x.is_finite())
+    {
+        return Err(format!(
+            "{}: non-finite entry {matrix:?} {increment:?}",
+            case.name
+        ));
     }
     let reference = reference(exact[0], exact[1], exact[2], exact[3]);
     let u = T::UNIT_ROUNDOFF.to_f64();
@@ -135,7 +146,10 @@ fn check_hard_cases<T: Scalar>(label: &str) {
             Err(message) => failures.push(message),
         }
     }
-    assert!(failures.is_empty(), "{label}: over {BOUND}·u·cond: {failures:#?}");
+    assert!(
+        failures.is_empty(),
+        "{label}: over {BOUND}·u·cond: {failures:#?}"
+    );
 }
 
 #[test]
@@ -250,18 +264,20 @@ fn random_case() -> impl Strategy<Value = Case> {
 
 /// Near critical damping, where the band and the modal/trigonometric forms meet.
 fn near_critical_case() -> impl Strategy<Value = Case> {
-    (-30.0..30.0_f64, -3.0..6.0_f64, -2.0..2.0_f64).prop_map(|(log_excess, log_omega_dt, log_mass)| {
-        let mass = 10f64.powf(log_mass);
-        let zeta = 1.0 + log_excess.signum() * 10f64.powf(-log_excess.abs() / 2.0);
-        let omega: f64 = 3.0;
-        Case {
-            name: "near critical",
-            mass,
-            damping: 2.0 * zeta * omega * mass,
-            stiffness: mass * omega * omega,
-            dt: 10f64.powf(log_omega_dt) / omega,
-        }
-    })
+    (-30.0..30.0_f64, -3.0..6.0_f64, -2.0..2.0_f64).prop_map(
+        |(log_excess, log_omega_dt, log_mass)| {
+            let mass = 10f64.powf(log_mass);
+            let zeta = 1.0 + log_excess.signum() * 10f64.powf(-log_excess.abs() / 2.0);
+            let omega: f64 = 3.0;
+            Case {
+                name: "near critical",
+                mass,
+                damping: 2.0 * zeta * omega * mass,
+                stiffness: mass * omega * omega,
+                dt: 10f64.powf(log_omega_dt) / omega,
+            }
+        },
+    )
 }
 
 proptest! {
@@ -326,7 +342,10 @@ fn seeded_sweep_reports_worst_ratio() {
             .enumerate()
         {
             let (matrix, increment) = result.unwrap();
-            assert!(matrix <= BOUND && increment <= BOUND, "{case:?}: {matrix} {increment}");
+            assert!(
+                matrix <= BOUND && increment <= BOUND,
+                "{case:?}: {matrix} {increment}"
+            );
             worst[slot] = (worst[slot].0.max(matrix), worst[slot].1.max(increment));
         }
     }

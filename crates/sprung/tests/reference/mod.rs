@@ -12,9 +12,9 @@
     reason = "each test crate uses a different part of this shared helper"
 )]
 
+use dashu_float::FBig;
 use dashu_float::ops::Abs;
 use dashu_float::round::mode::HalfEven;
-use dashu_float::FBig;
 
 /// Working precision in bits.
 pub(crate) const PRECISION: usize = 320;
@@ -134,8 +134,7 @@ fn time_series_g0(b: &Big, w2: &Big, t: &Big) -> Big {
     let tiny = big(2f64.powi(-360));
     for m in 1..100_000 {
         let mf = big(f64::from(m));
-        let next =
-            -(&two_bt * &mf * &current + &w2t2 * &previous) / (&mf * (&mf + big(1.0)));
+        let next = -(&two_bt * &mf * &current + &w2t2 * &previous) / (&mf * (&mf + big(1.0)));
         previous = current;
         current = next;
         let term = &current / (&mf + big(2.0));
@@ -170,13 +169,37 @@ impl Reference {
     /// `(|computed − exact|)/(u·(|exact| + sensitivity))` per matrix entry: the error in units
     /// of roundoff times the condition number, with `floor` added to the allowance for results
     /// at the underflow threshold.
-    pub(crate) fn matrix_error_ratios(&self, computed: [[f64; 2]; 2], u: f64, floor: f64) -> [f64; 4] {
-        ratios(&self.matrix, &self.matrix, &self.sensitivity, computed, u, floor)
+    pub(crate) fn matrix_error_ratios(
+        &self,
+        computed: [[f64; 2]; 2],
+        u: f64,
+        floor: f64,
+    ) -> [f64; 4] {
+        ratios(
+            &self.matrix,
+            &self.matrix,
+            &self.sensitivity,
+            computed,
+            u,
+            floor,
+        )
     }
 
     /// The same for `D = M − I`, whose entries are measured against their own size.
-    pub(crate) fn increment_error_ratios(&self, computed: [[f64; 2]; 2], u: f64, floor: f64) -> [f64; 4] {
-        ratios(&self.increment, &self.increment, &self.sensitivity, computed, u, floor)
+    pub(crate) fn increment_error_ratios(
+        &self,
+        computed: [[f64; 2]; 2],
+        u: f64,
+        floor: f64,
+    ) -> [f64; 4] {
+        ratios(
+            &self.increment,
+            &self.increment,
+            &self.sensitivity,
+            computed,
+            u,
+            floor,
+        )
     }
 }
 
