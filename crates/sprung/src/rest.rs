@@ -21,6 +21,7 @@ use crate::{Scalar, Spring};
 /// # Ok::<(), sprung::SpringError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "bevy_reflect", derive(bevy_reflect::Reflect))]
 pub struct RestThreshold<T = f32> {
     /// Largest distance from the target that counts as arrived.
     pub offset: T,

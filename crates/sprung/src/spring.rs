@@ -14,6 +14,7 @@ const CRITICAL_HALFWAY: f64 = 1.678_346_990_016_660_8;
 /// The [transition](Spring::transition) does not branch on this: one evaluation covers all
 /// regimes continuously. It is descriptive, for users and for choosing presets.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "bevy_reflect", derive(bevy_reflect::Reflect))]
 pub enum Regime {
     /// `0 < ζ < 1`: oscillates with a decaying envelope.
     Underdamped,
@@ -56,6 +57,7 @@ pub enum Regime {
 /// # Ok::<(), sprung::SpringError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "bevy_reflect", derive(bevy_reflect::Reflect))]
 pub struct Spring<T = f32> {
     mass: T,
     stiffness: T,

@@ -33,6 +33,7 @@ impl<T, V> SpringValue<T> for V where
 /// assert!((state.position - 10.0).abs() < 0.1);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "bevy_reflect", derive(bevy_reflect::Reflect))]
 pub struct SpringState<V> {
     /// Where the value is.
     pub position: V,

@@ -1,0 +1,62 @@
+//! Events the springs trigger.
+
+use core::fmt;
+use core::marker::PhantomData;
+
+use bevy::prelude::*;
+
+use crate::property::SpringProperty;
+
+/// Triggered once when the spring on property `P` of `entity` comes to rest and goes to sleep:
+/// the replacement for a tween's completion event.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn(mut commands: Commands) {
+///     commands
+///         .spawn((Transform::default(), TranslationSpring::new(Spring::snappy(), Vec3::X)))
+///         .observe(|settled: On<SpringSettled<Translation>>| {
+///             info!("{} arrived", settled.entity);
+///         });
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.update();
+/// ```
+#[derive(EntityEvent)]
+pub struct SpringSettled<P: SpringProperty> {
+    /// The entity whose spring settled.
+    pub entity: Entity,
+    property: PhantomData<fn() -> P>,
+}
+
+impl<P: SpringProperty> SpringSettled<P> {
+    /// The event for `entity`.
+    #[must_use]
+    pub fn new(entity: Entity) -> Self {
+        Self {
+            entity,
+            property: PhantomData,
+        }
+    }
+}
+
+impl<P: SpringProperty> Clone for SpringSettled<P> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<P: SpringProperty> Copy for SpringSettled<P> {}
+
+impl<P: SpringProperty> fmt::Debug for SpringSettled<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("SpringSettled")
+            .field("property", &P::short_type_path())
+            .field("entity", &self.entity)
+            .finish()
+    }
+}

@@ -1,0 +1,64 @@
+//! Exact damped springs for Bevy.
+//!
+//! Spring components move a property of their entity — a `Transform`'s translation, rotation or
+//! scale, or any field you describe with a [`SpringProperty`] — toward a target every frame,
+//! with the exact closed-form step of [`sprung`]: the same motion at any frame rate and after a
+//! hitch, momentum kept when retargeted, and no NaN ever written.
+//!
+//! - **Simulate only what the scene calls for**: each property is a separate component, so only
+//!   what a scene springs is stepped; a spring at rest snaps onto its target, triggers
+//!   [`SpringSettled`] once and sleeps (not iterated, no writes, `Changed<Transform>` stays
+//!   quiet) until its target changes; with the `visibility` feature, springs nobody sees can
+//!   skip frames and [catch up](CatchUpWhenHidden) exactly in one step.
+//! - **One mechanism**: [`PropertySpring<P>`] over a [`SpringProperty`]; the built-in
+//!   [`TranslationSpring`], [`RotationSpring`], [`ScaleSpring`] are aliases, and a field of your
+//!   own component takes a [`LinearProperty`] impl and a [`SpringPropertyPlugin`].
+//!
+//! # Example
+//! ```
+//! use bevy::prelude::*;
+//! use bevy_sprung::prelude::*;
+//!
+//! let mut app = App::new();
+//! app.add_plugins((MinimalPlugins, SpringPlugin::default()));
+//! let entity = app
+//!     .world_mut()
+//!     .spawn((Transform::default(), TranslationSpring::new(Spring::snappy(), Vec3::X * 100.0)))
+//!     .id();
+//! app.update();
+//! ```
+//!
+//! # Features
+//! - `visibility`: [`CatchUpWhenHidden`], which needs `ViewVisibility` (`bevy/bevy_camera`).
+
+mod component;
+mod event;
+mod plugin;
+mod property;
+mod systems;
+
+#[cfg(feature = "visibility")]
+pub use component::CatchUpWhenHidden;
+pub use component::{
+    PropertySpring, RotationSpring, ScaleSpring, SignedScaleSpring, SpringAsleep, SpringClock,
+    SpringInputError, TranslationSpring,
+};
+pub use event::SpringSettled;
+pub use plugin::{SpringPlugin, SpringPropertyPlugin, SpringSettings, SpringSystems};
+pub use property::{
+    LinearProperty, Reflectable, Rotation, Scale, SignedScale, SpringProperty, SpringVector,
+    Translation, rotation_vector,
+};
+pub use sprung;
+
+/// The types most apps need: `use bevy_sprung::prelude::*;`.
+pub mod prelude {
+    #[cfg(feature = "visibility")]
+    pub use crate::CatchUpWhenHidden;
+    pub use crate::{
+        LinearProperty, PropertySpring, Rotation, RotationSpring, Scale, ScaleSpring, SignedScale,
+        SignedScaleSpring, SpringAsleep, SpringClock, SpringPlugin, SpringProperty,
+        SpringPropertyPlugin, SpringSettled, SpringSystems, Translation, TranslationSpring,
+    };
+    pub use sprung::{RestThreshold, Spring};
+}

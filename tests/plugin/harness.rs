@@ -1,0 +1,78 @@
+//! Test helpers: headless apps with manual time, and the exact reference the plugin must match.
+
+use std::time::Duration;
+
+use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
+use bevy_sprung::prelude::*;
+use sprung::SpringState;
+
+/// A headless app with the spring plugin, advancing `1/fps` seconds per update. Like every
+/// Bevy app, its first update has `dt = 0`.
+pub(crate) fn app(fps: u32) -> App {
+    app_with(fps, SpringPlugin::default())
+}
+
+/// [`app`] with a configured plugin.
+pub(crate) fn app_with(fps: u32, plugin: SpringPlugin) -> App {
+    let mut app = App::new();
+    app.add_plugins((MinimalPlugins, TransformPlugin, plugin))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(frame(fps)));
+    app
+}
+
+/// One frame at `fps`, as the `Duration` Bevy adds (whole nanoseconds).
+pub(crate) fn frame(fps: u32) -> Duration {
+    Duration::from_secs_f64(1.0 / f64::from(fps))
+}
+
+/// Runs `frames` updates.
+pub(crate) fn run(app: &mut App, frames: u32) {
+    for _ in 0..frames {
+        app.update();
+    }
+}
+
+/// Spawns a `Transform` at `from` springing toward `to`.
+pub(crate) fn spawn_translation(app: &mut App, spring: Spring, from: Vec3, to: Vec3) -> Entity {
+    app.world_mut()
+        .spawn((
+            Transform::from_translation(from),
+            TranslationSpring::new(spring, to),
+        ))
+        .id()
+}
+
+/// The entity's translation.
+pub(crate) fn translation(app: &App, entity: Entity) -> Vec3 {
+    app.world().get::<Transform>(entity).unwrap().translation
+}
+
+/// The entity's translation spring.
+pub(crate) fn translation_spring(app: &App, entity: Entity) -> TranslationSpring {
+    *app.world().get::<TranslationSpring>(entity).unwrap()
+}
+
+/// Whether the entity's spring on `P` sleeps.
+pub(crate) fn asleep<P: SpringProperty>(app: &App, entity: Entity) -> bool {
+    app.world().get::<SpringAsleep<P>>(entity).is_some()
+}
+
+/// Virtual seconds elapsed.
+pub(crate) fn elapsed(app: &App) -> f64 {
+    app.world().resource::<Time<Virtual>>().elapsed_secs_f64()
+}
+
+/// The exact state, in `f64`, of a 1D spring released at rest at `from` toward `to` after
+/// `seconds`: what every frame rate must reproduce.
+pub(crate) fn exact(spring: &Spring, from: f32, to: f32, seconds: f64) -> SpringState<f64> {
+    let spring = sprung::Spring::<f64>::new(
+        f64::from(spring.mass()),
+        f64::from(spring.stiffness()),
+        f64::from(spring.damping()),
+    )
+    .unwrap();
+    spring
+        .transition(seconds)
+        .step(SpringState::new(f64::from(from), 0.0), f64::from(to))
+}

@@ -1,0 +1,17 @@
+//! The Bevy plugin in headless apps: motion, sleeping, events, clocks, schedules, bad input,
+//! ordering, custom properties and exact catch-up.
+
+#![allow(
+    clippy::float_cmp,
+    reason = "snapped and frozen values are asserted bit for bit"
+)]
+
+mod harness;
+
+mod bad_input;
+mod catch_up;
+mod clocks;
+mod motion;
+mod properties;
+mod scheduling;
+mod sleeping;

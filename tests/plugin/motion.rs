@@ -1,0 +1,196 @@
+//! Springs reach their targets exactly as the closed form says, at any frame rate.
+
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+use sprung::SpringState;
+
+use crate::harness::{
+    app, asleep, elapsed, exact, run, spawn_translation, translation, translation_spring,
+};
+
+#[test]
+fn reaches_and_settles_exactly_on_its_target() {
+    let mut app = app(60);
+    let target = Vec3::new(100.0, -40.0, 3.0);
+    let entity = spawn_translation(&mut app, Spring::snappy(), Vec3::ZERO, target);
+    run(&mut app, 20);
+    assert!(
+        !asleep::<Translation>(&app, entity),
+        "still moving after 1/3 s"
+    );
+    let halfway = translation(&app, entity);
+    assert!(halfway.distance(target) < target.length() / 2.0 && halfway != target);
+    run(&mut app, 180);
+    assert!(asleep::<Translation>(&app, entity));
+    // Snapped: exactly the target, exactly at rest.
+    assert_eq!(translation(&app, entity), target);
+    assert_eq!(translation_spring(&app, entity).velocity(), Vec3::ZERO);
+}
+
+#[test]
+fn follows_the_exact_solution() {
+    let spring = Spring::from_natural_frequency(9.0, 0.35).unwrap();
+    let mut app = app(60);
+    let entity = spawn_translation(&mut app, spring, Vec3::X * 10.0, Vec3::ZERO);
+    for _ in 0..45 {
+        app.update();
+        let expected = exact(&spring, 10.0, 0.0, elapsed(&app));
+        let x = translation(&app, entity).x;
+        assert!(
+            (f64::from(x) - expected.position).abs() < 2e-5,
+            "{x} vs {}",
+            expected.position
+        );
+    }
+}
+
+/// 1 s at 30, 60 and 144 fps lands on the same state, the exact one, to f32 rounding.
+#[test]
+fn same_motion_at_30_60_and_144_fps() {
+    let spring = Spring::from_natural_frequency(12.0, 0.2).unwrap();
+    let mut finals = Vec::new();
+    for fps in [30, 60, 144] {
+        let mut app = app(fps);
+        let entity = spawn_translation(&mut app, spring, Vec3::ZERO, Vec3::new(100.0, 50.0, 0.0));
+        // The first update has dt = 0; then `fps` frames make one second.
+        run(&mut app, fps + 1);
+        let seconds = elapsed(&app);
+        let state = translation_spring(&app, entity);
+        let x = translation(&app, entity);
+        let expected = exact(&spring, 0.0, 100.0, seconds);
+        assert!((seconds - 1.0).abs() < 1e-6, "{fps} fps: {seconds} s");
+        assert!(
+            (f64::from(x.x) - expected.position).abs() < 2e-3,
+            "{fps} fps: {} vs {}",
+            x.x,
+            expected.position
+        );
+        assert!(
+            (f64::from(state.velocity().x) - expected.velocity).abs() < 2e-2,
+            "{fps} fps"
+        );
+        finals.push((x, state.velocity()));
+    }
+    for (x, v) in &finals[1..] {
+        assert!(
+            x.distance(finals[0].0) < 3e-3 && v.distance(finals[0].1) < 3e-2,
+            "{finals:?}"
+        );
+    }
+}
+
+/// A retarget keeps the velocity: the frame after it moves as the exact step from the same
+/// position and velocity toward the new target, and the velocity only changes by what the
+/// spring force does in one frame.
+#[test]
+fn retargeting_mid_flight_keeps_the_velocity() {
+    let spring = Spring::from_natural_frequency(10.0, 0.6).unwrap();
+    let mut app = app(60);
+    let entity = spawn_translation(&mut app, spring, Vec3::ZERO, Vec3::new(100.0, 0.0, 0.0));
+    run(&mut app, 8);
+    let before = translation_spring(&app, entity).velocity();
+    let position = translation(&app, entity);
+    assert!(before.x > 100.0, "should be moving fast: {before}");
+    let new_target = Vec3::new(0.0, 80.0, 0.0);
+    app.world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap()
+        .set_target(new_target)
+        .unwrap();
+    app.update();
+    let after = translation_spring(&app, entity).velocity();
+    let dt = 1.0 / 60.0;
+    let step = spring
+        .transition(dt)
+        .step(SpringState::new(position, before), new_target);
+    assert!(translation(&app, entity).distance(step.position) < 1e-4);
+    assert!(after.distance(step.velocity) < 1e-3);
+    // Continuity: |Δv| ≤ dt·(k·|offset| + c·|v|)/m, and it still moves along +x.
+    let bound = dt
+        * (spring.stiffness() * (position - new_target).length()
+            + spring.damping() * before.length());
+    assert!(after.distance(before) <= bound, "{before} → {after}");
+    assert!(after.x > 0.5 * before.x);
+}
+
+#[test]
+fn impulses_add_velocity_and_wake_the_spring() {
+    let mut app = app(60);
+    let entity = spawn_translation(&mut app, Spring::wobbly(), Vec3::ZERO, Vec3::ZERO);
+    run(&mut app, 3);
+    assert!(asleep::<Translation>(&app, entity));
+    app.world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap()
+        .add_impulse(Vec3::new(0.0, 300.0, 0.0))
+        .unwrap();
+    app.update();
+    assert!(!asleep::<Translation>(&app, entity));
+    assert!(translation(&app, entity).y > 0.0);
+    run(&mut app, 600);
+    assert!(asleep::<Translation>(&app, entity));
+    assert_eq!(translation(&app, entity), Vec3::ZERO);
+}
+
+/// A follower given its target's velocity trails it by the steady lag `c·r/k` and never
+/// sleeps while the target moves.
+#[test]
+fn follows_a_moving_target_at_the_steady_lag() {
+    let spring = Spring::from_natural_frequency(8.0, 1.0).unwrap();
+    let speed = Vec3::new(30.0, 0.0, 0.0);
+    let mut app = app(60);
+    let entity = spawn_translation(&mut app, spring, Vec3::ZERO, Vec3::ZERO);
+    app.world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap()
+        .set_target_velocity(speed)
+        .unwrap();
+    let lag = spring.damping() * speed.x / spring.stiffness();
+    let mut target = Vec3::ZERO;
+    for frame in 0..240 {
+        target += speed / 60.0;
+        app.world_mut()
+            .get_mut::<TranslationSpring>(entity)
+            .unwrap()
+            .set_target(target)
+            .unwrap();
+        app.update();
+        if frame > 120 {
+            let trailing = target.x - translation(&app, entity).x;
+            assert!(
+                (trailing - lag).abs() < 1e-3,
+                "frame {frame}: lag {trailing} vs {lag}"
+            );
+        }
+    }
+    assert!(!asleep::<Translation>(&app, entity));
+}
+
+/// Thousands of springs, stepped in parallel batches with cached transitions, each move
+/// exactly as one spring alone would.
+#[test]
+fn many_springs_match_one_spring_each() {
+    let mut app = app(60);
+    let springs: Vec<_> = (0..3000)
+        .map(|i| {
+            let f = i as f32;
+            let spring = Spring::from_natural_frequency(2.0 + (f % 7.0), 0.1 * (f % 13.0)).unwrap();
+            let target = Vec3::new(f, -f, 0.5 * f);
+            (
+                spawn_translation(&mut app, spring, Vec3::ZERO, target),
+                spring,
+                target,
+            )
+        })
+        .collect();
+    run(&mut app, 31);
+    let seconds = elapsed(&app);
+    for (entity, spring, target) in springs {
+        let expected = exact(&spring, 0.0, target.x, seconds).position;
+        let x = f64::from(translation(&app, entity).x);
+        assert!(
+            (x - expected).abs() <= 1e-5 * (1.0 + expected.abs()),
+            "{x} vs {expected}"
+        );
+    }
+}

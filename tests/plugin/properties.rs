@@ -1,0 +1,210 @@
+//! The built-in properties' special cases, and a property of the user's own.
+
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+use bevy_sprung::rotation_vector;
+
+use crate::harness::{app, asleep, run};
+
+/// A user property in a few lines: the x scale alone, as a scalar spring.
+#[derive(Reflect)]
+pub(crate) struct ScaleX;
+
+impl LinearProperty for ScaleX {
+    type Component = Transform;
+    type Value = f32;
+
+    fn get(transform: &Transform) -> f32 {
+        transform.scale.x
+    }
+
+    fn set(transform: &mut Transform, value: f32) {
+        transform.scale.x = value;
+    }
+}
+
+/// A component of the user's own, with a scalar field.
+#[derive(Component, Default)]
+struct Loudness(f32);
+
+#[derive(Reflect)]
+struct LoudnessLevel;
+
+impl LinearProperty for LoudnessLevel {
+    type Component = Loudness;
+    type Value = f32;
+
+    fn get(loudness: &Loudness) -> f32 {
+        loudness.0
+    }
+
+    fn set(loudness: &mut Loudness, value: f32) {
+        loudness.0 = value;
+    }
+}
+
+#[test]
+fn a_user_property_springs_and_settles() {
+    let mut app = app(60);
+    app.add_plugins((
+        SpringPropertyPlugin::<LoudnessLevel>::default(),
+        SpringPropertyPlugin::<ScaleX>::default(),
+    ));
+    let entity = app
+        .world_mut()
+        .spawn((
+            Loudness(0.0),
+            PropertySpring::<LoudnessLevel>::new(Spring::snappy(), 0.8),
+            Transform::default(),
+            PropertySpring::<ScaleX>::new(Spring::bouncy(), 3.0),
+        ))
+        .id();
+    run(&mut app, 10);
+    let loudness = app.world().get::<Loudness>(entity).unwrap().0;
+    assert!(loudness > 0.3 && loudness < 0.8, "{loudness}");
+    run(&mut app, 300);
+    assert_eq!(app.world().get::<Loudness>(entity).unwrap().0, 0.8);
+    assert_eq!(
+        app.world().get::<Transform>(entity).unwrap().scale,
+        Vec3::new(3.0, 1.0, 1.0)
+    );
+    assert!(asleep::<LoudnessLevel>(&app, entity) && asleep::<ScaleX>(&app, entity));
+    // The component is reflected and registered like the built-in ones.
+    let registry = app.world().resource::<AppTypeRegistry>().read();
+    assert!(
+        registry
+            .get(core::any::TypeId::of::<PropertySpring<LoudnessLevel>>())
+            .is_some()
+    );
+    assert!(
+        registry
+            .get(core::any::TypeId::of::<TranslationSpring>())
+            .is_some()
+    );
+}
+
+#[test]
+fn rotation_takes_the_short_way_and_settles_exactly() {
+    let mut app = app(60);
+    // From +170° to −170° about z: the short way is 20° through 180°, not 340° through 0°.
+    let from = Quat::from_rotation_z(170f32.to_radians());
+    let to = Quat::from_rotation_z(-170f32.to_radians());
+    let entity = app
+        .world_mut()
+        .spawn((
+            Transform::from_rotation(from),
+            RotationSpring::new(Spring::smooth(), to),
+        ))
+        .id();
+    for _ in 0..240 {
+        app.update();
+        let rotation = app.world().get::<Transform>(entity).unwrap().rotation;
+        // Never further than the start from the target (critically damped, no overshoot).
+        assert!(rotation.angle_between(to) <= from.angle_between(to) + 1e-5);
+        assert!(rotation.angle_between(Quat::from_rotation_z(0.0)) > 160f32.to_radians());
+    }
+    assert!(asleep::<Rotation>(&app, entity));
+    assert_eq!(app.world().get::<Transform>(entity).unwrap().rotation, to);
+}
+
+#[test]
+fn rotation_vector_is_accurate_near_the_identity() {
+    for angle in [1e-7_f32, 1e-5, 1e-3, 0.1, 1.0, 3.0, std::f32::consts::PI] {
+        let axis = Vec3::new(1.0, -2.0, 0.5).normalize();
+        let v = rotation_vector(Quat::from_axis_angle(axis, angle));
+        assert!(
+            (v.length() - angle).abs() <= 4.0 * f32::EPSILON * angle,
+            "{angle}: {}",
+            v.length()
+        );
+        // And the other hemisphere gives the same rotation vector.
+        let w = rotation_vector(-Quat::from_axis_angle(axis, angle));
+        assert!(v.distance(w) <= 4.0 * f32::EPSILON * angle.max(1.0));
+    }
+}
+
+/// Retargeting a rotation keeps its angular velocity in the world: the velocity, expressed in
+/// the old target's frame, is re-expressed in the new target's frame before the step.
+#[test]
+fn rotation_retarget_keeps_the_world_angular_velocity() {
+    let spring = Spring::wobbly();
+    let mut app = app(60);
+    let entity = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            RotationSpring::new(spring, Quat::from_rotation_y(1.0)),
+        ))
+        .id();
+    run(&mut app, 6);
+    let before = *app.world().get::<RotationSpring>(entity).unwrap();
+    let rotation = app.world().get::<Transform>(entity).unwrap().rotation;
+    let new_target = Quat::from_rotation_x(1.5);
+    app.world_mut()
+        .get_mut::<RotationSpring>(entity)
+        .unwrap()
+        .set_target(new_target)
+        .unwrap();
+    app.update();
+    let after = *app.world().get::<RotationSpring>(entity).unwrap();
+    // The exact step from the same rotation with the same world angular velocity.
+    let kept = new_target.inverse() * (before.target() * before.velocity());
+    let dt = app.world().resource::<Time>().delta_secs();
+    let step = spring.transition(dt).step(
+        sprung::SpringState::new(rotation_vector(new_target.inverse() * rotation), kept),
+        Vec3::ZERO,
+    );
+    assert!(
+        after.velocity().distance(step.velocity) < 1e-3,
+        "{} vs {}",
+        after.velocity(),
+        step.velocity
+    );
+    let expected = new_target * Quat::from_scaled_axis(step.position);
+    let actual = app.world().get::<Transform>(entity).unwrap().rotation;
+    assert!(actual.angle_between(expected) < 1e-4);
+    // Keeping the raw numbers instead would have been a different motion.
+    assert!(kept.distance(before.velocity()) > 1.0);
+}
+
+#[test]
+fn scale_never_passes_through_zero_but_signed_scale_may() {
+    let bouncy = Spring::from_natural_frequency(20.0, 0.05).unwrap();
+    let mut app = app(60);
+    let scale = app
+        .world_mut()
+        .spawn((Transform::default(), ScaleSpring::new(bouncy, Vec3::ZERO)))
+        .id();
+    let signed = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            SignedScaleSpring::new(bouncy, Vec3::ZERO),
+        ))
+        .id();
+    let mut signed_went_negative = false;
+    for _ in 0..600 {
+        app.update();
+        let s = app.world().get::<Transform>(scale).unwrap().scale;
+        assert!(s.min_element() >= 0.0, "scale crossed zero: {s}");
+        signed_went_negative |= app.world().get::<Transform>(signed).unwrap().scale.x < 0.0;
+    }
+    assert!(signed_went_negative);
+    // A pop-out lands on zero and rests there.
+    assert!(asleep::<Scale>(&app, scale));
+    assert_eq!(
+        app.world().get::<Transform>(scale).unwrap().scale,
+        Vec3::ZERO
+    );
+    // A target of the other sign is still reached (the crossing is asked for).
+    app.world_mut()
+        .get_mut::<ScaleSpring>(scale)
+        .unwrap()
+        .set_target(Vec3::new(-1.0, 2.0, 1.0))
+        .unwrap();
+    run(&mut app, 1200);
+    assert_eq!(
+        app.world().get::<Transform>(scale).unwrap().scale,
+        Vec3::new(-1.0, 2.0, 1.0)
+    );
+}

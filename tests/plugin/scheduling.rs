@@ -1,0 +1,134 @@
+//! Where the systems run: before transform propagation, without ambiguities.
+
+use bevy::ecs::schedule::{LogLevel, ScheduleBuildSettings, Schedules};
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+
+use crate::harness::{app, run};
+
+/// `GlobalTransform` is propagated from the sprung `Transform` in the same frame, for roots
+/// and for children of sprung parents.
+#[test]
+fn global_transform_agrees_in_the_same_frame() {
+    let mut app = app(60);
+    let parent = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::bouncy(), Vec3::new(10.0, 0.0, 0.0)),
+            RotationSpring::new(Spring::bouncy(), Quat::from_rotation_z(1.0)),
+        ))
+        .id();
+    let child = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::snappy(), Vec3::new(0.0, 5.0, 0.0)),
+            ChildOf(parent),
+        ))
+        .id();
+    for _ in 0..40 {
+        app.update();
+        let world = app.world();
+        let parent_local = *world.get::<Transform>(parent).unwrap();
+        let child_local = *world.get::<Transform>(child).unwrap();
+        let parent_global = world.get::<GlobalTransform>(parent).unwrap();
+        let child_global = world.get::<GlobalTransform>(child).unwrap();
+        assert!(
+            parent_global
+                .translation()
+                .distance(parent_local.translation)
+                < 1e-5
+        );
+        let expected = parent_local.mul_transform(child_local);
+        assert!(child_global.translation().distance(expected.translation) < 1e-4);
+    }
+}
+
+/// Bevy's ambiguity detection finds no pair of systems involving the plugin's that could run in
+/// either order while touching the same data.
+#[test]
+fn no_ambiguities_with_the_plugins_systems() {
+    let mut app = app(60);
+    // A user property on Transform as well: it must be ordered against the built-in ones.
+    app.add_plugins(SpringPropertyPlugin::<crate::properties::ScaleX>::default());
+    app.edit_schedule(PostUpdate, |schedule| {
+        schedule.set_build_settings(ScheduleBuildSettings {
+            ambiguity_detection: LogLevel::Warn,
+            ..default()
+        });
+    });
+    app.world_mut().spawn((
+        Transform::default(),
+        TranslationSpring::new(Spring::snappy(), Vec3::X),
+        RotationSpring::new(Spring::snappy(), Quat::from_rotation_y(0.5)),
+        ScaleSpring::new(Spring::snappy(), Vec3::splat(2.0)),
+    ));
+    run(&mut app, 3);
+    // The names are there to be matched (Bevy's `debug` feature), so the check is not vacuous.
+    assert!(spring_system_runs(&app).len() >= 10);
+    let world = app.world();
+    let schedule = world.resource::<Schedules>().get(PostUpdate).unwrap();
+    let ours: Vec<_> = schedule
+        .graph()
+        .conflicting_systems()
+        .to_string(schedule.graph(), world.components())
+        .filter(|(a, b, _)| a.contains("bevy_sprung") || b.contains("bevy_sprung"))
+        .collect();
+    assert!(ours.is_empty(), "ambiguities: {ours:#?}");
+}
+
+/// The last-run ticks of the plugin's systems in `PostUpdate`.
+fn spring_system_runs(app: &App) -> Vec<(String, u32)> {
+    let schedule = app.world().resource::<Schedules>().get(PostUpdate).unwrap();
+    schedule
+        .systems()
+        .unwrap()
+        .filter(|(_, system)| system.name().to_string().contains("bevy_sprung"))
+        .map(|(_, system)| (system.name().to_string(), system.get_last_run().get()))
+        .collect()
+}
+
+/// With the plugin and no springs, none of the spring systems runs (their run conditions skip
+/// them); spawning a spring starts them.
+#[test]
+fn no_springs_no_work() {
+    let mut app = app(60);
+    run(&mut app, 2);
+    let idle = spring_system_runs(&app);
+    assert!(idle.len() >= 8, "{idle:?}");
+    run(&mut app, 5);
+    assert_eq!(
+        spring_system_runs(&app),
+        idle,
+        "a spring system ran without springs"
+    );
+    app.world_mut().spawn((
+        Transform::default(),
+        TranslationSpring::new(Spring::snappy(), Vec3::X),
+    ));
+    run(&mut app, 2);
+    let busy = spring_system_runs(&app);
+    let ran: Vec<_> = busy
+        .iter()
+        .zip(&idle)
+        .filter(|(a, b)| a.1 != b.1)
+        .map(|(a, _)| &a.0)
+        .collect();
+    assert_eq!(ran.len(), 2, "only the translation systems run: {ran:?}");
+}
+
+/// Adding a property's plugin again (a library and the app both asking for it) changes nothing:
+/// the spring is still stepped once per frame.
+#[test]
+fn adding_a_property_twice_is_harmless() {
+    let spring = Spring::from_natural_frequency(6.0, 0.5).unwrap();
+    let mut app = app(60);
+    app.add_plugins(SpringPropertyPlugin::<Translation>::default());
+    let entity = crate::harness::spawn_translation(&mut app, spring, Vec3::ZERO, Vec3::X * 10.0);
+    run(&mut app, 20);
+    let expected =
+        crate::harness::exact(&spring, 0.0, 10.0, crate::harness::elapsed(&app)).position;
+    let x = f64::from(crate::harness::translation(&app, entity).x);
+    assert!((x - expected).abs() < 1e-4, "{x} vs {expected}");
+}

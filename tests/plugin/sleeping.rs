@@ -1,0 +1,148 @@
+//! Springs at rest sleep: no writes, no iteration, one settle event, and they wake on demand.
+
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+
+use crate::harness::{app, asleep, run, spawn_translation, translation};
+
+/// Entities whose `Transform` changed since the last frame, seen right after the springs ran.
+#[derive(Resource, Default)]
+struct ChangedTransforms(Vec<Entity>);
+
+/// Entities whose translation spring component changed since the last frame.
+#[derive(Resource, Default)]
+struct ChangedSprings(Vec<Entity>);
+
+fn record_changes(
+    mut transforms: ResMut<ChangedTransforms>,
+    mut springs: ResMut<ChangedSprings>,
+    changed: Query<Entity, Changed<Transform>>,
+    changed_springs: Query<Entity, Changed<TranslationSpring>>,
+) {
+    transforms.0 = changed.iter().collect();
+    springs.0 = changed_springs.iter().collect();
+}
+
+fn recording_app() -> App {
+    let mut app = app(60);
+    app.init_resource::<ChangedTransforms>()
+        .init_resource::<ChangedSprings>()
+        .add_systems(PostUpdate, record_changes.after(SpringSystems));
+    app
+}
+
+#[test]
+fn a_sleeping_spring_writes_nothing_and_is_not_iterated() {
+    let mut app = recording_app();
+    let resting = spawn_translation(&mut app, Spring::stiff(), Vec3::ZERO, Vec3::X);
+    let moving = spawn_translation(&mut app, Spring::molasses(), Vec3::ZERO, Vec3::X * 1e4);
+    run(&mut app, 240);
+    assert!(asleep::<Translation>(&app, resting));
+    assert!(!asleep::<Translation>(&app, moving));
+    for _ in 0..30 {
+        app.update();
+        let transforms = &app.world().resource::<ChangedTransforms>().0;
+        let springs = &app.world().resource::<ChangedSprings>().0;
+        assert!(
+            !transforms.contains(&resting),
+            "a sleeping spring wrote its Transform"
+        );
+        assert!(!springs.contains(&resting), "a sleeping spring was stepped");
+        assert!(transforms.contains(&moving) && springs.contains(&moving));
+    }
+    assert_eq!(translation(&app, resting), Vec3::X);
+}
+
+#[test]
+fn setting_the_same_target_does_not_wake_it() {
+    let mut app = recording_app();
+    let entity = spawn_translation(&mut app, Spring::stiff(), Vec3::ZERO, Vec3::Y);
+    run(&mut app, 240);
+    assert!(asleep::<Translation>(&app, entity));
+    app.world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap()
+        .set_target(Vec3::Y)
+        .unwrap();
+    run(&mut app, 2);
+    assert!(asleep::<Translation>(&app, entity));
+    assert!(
+        !app.world()
+            .resource::<ChangedTransforms>()
+            .0
+            .contains(&entity)
+    );
+}
+
+/// Counts settle events per entity.
+#[derive(Resource, Default)]
+struct Settled(Vec<Entity>);
+
+#[test]
+fn exactly_one_settle_event_per_settle() {
+    let mut app = app(60);
+    app.init_resource::<Settled>().add_observer(
+        |settled: On<SpringSettled<Translation>>, mut log: ResMut<Settled>| {
+            log.0.push(settled.entity);
+        },
+    );
+    let a = spawn_translation(&mut app, Spring::snappy(), Vec3::ZERO, Vec3::X * 50.0);
+    let b = spawn_translation(&mut app, Spring::slow(), Vec3::ZERO, Vec3::X * 50.0);
+    let count = |app: &App, e: Entity| {
+        app.world()
+            .resource::<Settled>()
+            .0
+            .iter()
+            .filter(|&&x| x == e)
+            .count()
+    };
+    run(&mut app, 30);
+    assert_eq!(
+        (count(&app, a), count(&app, b)),
+        (0, 0),
+        "nothing has settled yet"
+    );
+    run(&mut app, 600);
+    assert_eq!((count(&app, a), count(&app, b)), (1, 1));
+    run(&mut app, 60);
+    assert_eq!(
+        (count(&app, a), count(&app, b)),
+        (1, 1),
+        "no repeat while asleep"
+    );
+    // Wake one: one more settle for it only.
+    app.world_mut()
+        .get_mut::<TranslationSpring>(a)
+        .unwrap()
+        .set_target(Vec3::ZERO)
+        .unwrap();
+    run(&mut app, 600);
+    assert_eq!((count(&app, a), count(&app, b)), (2, 1));
+}
+
+/// The event also reaches an observer on the entity itself, as a tween's completion would.
+#[test]
+fn entity_observers_see_their_own_settle() {
+    #[derive(Resource, Default)]
+    struct Done(u32);
+    let mut app = app(60);
+    app.init_resource::<Done>();
+    app.world_mut()
+        .spawn((
+            Transform::default(),
+            ScaleSpring::new(Spring::snappy(), Vec3::splat(2.0)),
+        ))
+        .observe(|_: On<SpringSettled<Scale>>, mut done: ResMut<Done>| done.0 += 1);
+    run(&mut app, 300);
+    assert_eq!(app.world().resource::<Done>().0, 1);
+}
+
+/// Despawning a spring while it settles, or its marker racing a despawn, is harmless.
+#[test]
+fn despawned_springs_are_harmless() {
+    let mut app = app(60);
+    let entity = spawn_translation(&mut app, Spring::stiff(), Vec3::ZERO, Vec3::X);
+    run(&mut app, 5);
+    app.world_mut().despawn(entity);
+    run(&mut app, 300);
+}
