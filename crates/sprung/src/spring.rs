@@ -156,6 +156,7 @@ impl<T: Scalar> Spring<T> {
             omega_squared,
             crate::math::sqrt(omega_squared),
             t,
+            T::UNIT_ROUNDOFF.to_f64(),
         )
     }
 

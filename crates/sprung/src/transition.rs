@@ -91,18 +91,19 @@ impl<V: Copy + Sub<Output = V>> SpringState<V> {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transition<T = f32> {
-    dt: T,
-    /// `2b = c/m`.
-    rate: T,
-    f0: T,
-    f1: T,
-    w2f1: T,
-    g: T,
+    // What a constant-target step reads comes first, together.
     /// `D₀₀ = −ω²·g0`.
     d00: T,
+    f1: T,
+    w2f1: T,
     /// `D₁₁ = −(ω²·g0 + 2b·f1)`.
     d11: T,
+    f0: T,
+    g: T,
     g0: T,
+    /// `2b = c/m`.
+    rate: T,
+    dt: T,
 }
 
 impl<T: Scalar> Transition<T> {
@@ -110,17 +111,17 @@ impl<T: Scalar> Transition<T> {
     pub(crate) fn from_coefficients(dt: T, rate: T, c: &Coefficients) -> Self {
         let rate_f64 = rate.to_f64();
         Self {
-            dt,
-            rate,
-            f0: T::from_f64(c.f0),
-            f1: T::from_f64(c.f1),
-            w2f1: T::from_f64(c.w2f1),
-            g: T::from_f64(c.g),
             // `0 − x` rather than `−x`: a free spring's entries are +0, not −0.
             d00: T::from_f64(0.0 - c.w2g0),
+            f1: T::from_f64(c.f1),
+            w2f1: T::from_f64(c.w2f1),
             // Both terms are ≥ 0: no cancellation.
             d11: T::from_f64(0.0 - (c.w2g0 + rate_f64 * c.f1)),
+            f0: T::from_f64(c.f0),
+            g: T::from_f64(c.g),
             g0: T::from_f64(c.g0),
+            rate,
+            dt,
         }
     }
 
@@ -129,15 +130,15 @@ impl<T: Scalar> Transition<T> {
     pub fn identity() -> Self {
         let (zero, one) = (T::zero(), T::one());
         Self {
-            dt: zero,
-            rate: zero,
-            f0: one,
+            d00: zero,
             f1: zero,
             w2f1: zero,
-            g: one,
-            d00: zero,
             d11: zero,
+            f0: one,
+            g: one,
             g0: zero,
+            rate: zero,
+            dt: zero,
         }
     }
 
