@@ -9,6 +9,9 @@ use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 
 use crate::component::{PropertySpring, SpringAsleep, SpringClock};
+use crate::follow::{
+    SpringFollow, TargetMotion, aim_followers, follow_targets, sample_fixed_targets,
+};
 use crate::property::{Rotation, Scale, SignedScale, SpringProperty, Translation};
 use crate::systems::{step_springs, wake_springs};
 
@@ -23,7 +26,7 @@ pub struct SpringSystems;
 /// properties on the same component (translation, rotation, scale of a `Transform`) never run
 /// in an ambiguous order.
 #[derive(SystemSet)]
-struct PropertySystems<P: SpringProperty>(PhantomData<fn() -> P>);
+pub(crate) struct PropertySystems<P: SpringProperty>(PhantomData<fn() -> P>);
 
 impl<P: SpringProperty> Default for PropertySystems<P> {
     fn default() -> Self {
@@ -151,6 +154,56 @@ impl Plugin for SpringPlugin {
             SpringPropertyPlugin::<Scale>::default(),
             SpringPropertyPlugin::<SignedScale>::default(),
         ));
+        #[cfg(feature = "sprite")]
+        app.add_plugins(SpringPropertyPlugin::<
+            crate::color::Oklab<crate::color::SpriteTint>,
+        >::default());
+        #[cfg(feature = "ui")]
+        {
+            use crate::color::{Background, Border, ImageTint, Oklab, Text};
+            use crate::ui::{
+                NodeBottom, NodeHeight, NodeLeft, NodePosition, NodeRight, NodeSize, NodeTop,
+                NodeWidth, UiTransformRotation, UiTransformScale, UiTransformTranslation,
+            };
+            app.add_plugins((
+                SpringPropertyPlugin::<UiTransformTranslation>::default(),
+                SpringPropertyPlugin::<UiTransformScale>::default(),
+                SpringPropertyPlugin::<UiTransformRotation>::default(),
+                SpringPropertyPlugin::<NodeSize>::default(),
+                SpringPropertyPlugin::<NodePosition>::default(),
+                SpringPropertyPlugin::<NodeWidth>::default(),
+                SpringPropertyPlugin::<NodeHeight>::default(),
+                SpringPropertyPlugin::<NodeLeft>::default(),
+                SpringPropertyPlugin::<NodeTop>::default(),
+                SpringPropertyPlugin::<NodeRight>::default(),
+                SpringPropertyPlugin::<NodeBottom>::default(),
+            ))
+            .add_plugins((
+                SpringPropertyPlugin::<Oklab<Background>>::default(),
+                SpringPropertyPlugin::<Oklab<Border>>::default(),
+                SpringPropertyPlugin::<Oklab<Text>>::default(),
+                SpringPropertyPlugin::<Oklab<ImageTint>>::default(),
+            ));
+        }
+        // Followers: sampled after each fixed step, retargeted before the translation springs
+        // step, turned toward their target after those and before the rotation springs.
+        app.register_type::<SpringFollow>()
+            .register_type::<TargetMotion>()
+            .add_systems(
+                FixedPostUpdate,
+                sample_fixed_targets.run_if(any_with_component::<SpringFollow>),
+            )
+            .add_systems(
+                self.schedule,
+                (
+                    follow_targets.before(PropertySystems::<Translation>::default()),
+                    aim_followers
+                        .after(PropertySystems::<Translation>::default())
+                        .before(PropertySystems::<Rotation>::default()),
+                )
+                    .in_set(SpringSystems)
+                    .run_if(any_with_component::<SpringFollow>),
+            );
     }
 }
 

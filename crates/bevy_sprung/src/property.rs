@@ -378,19 +378,34 @@ impl SpringProperty for Scale {
 
     #[inline]
     fn constrain(before: Vec3, after: Vec3, velocity: Vec3, target: Vec3) -> (Vec3, Vec3) {
-        let mut value = after.to_array();
-        let mut velocity = velocity.to_array();
-        for i in 0..3 {
-            // Crossing from the target's side of zero (or from zero) to the other side is an
-            // overshoot: stop at zero.
-            let (b, a, t) = (before[i], value[i], target[i]);
-            if (b >= 0.0 && a < 0.0 && t >= 0.0) || (b <= 0.0 && a > 0.0 && t <= 0.0) {
-                value[i] = 0.0;
-                velocity[i] = 0.0;
-            }
-        }
+        let (value, velocity) = stop_at_zero(
+            before.to_array(),
+            after.to_array(),
+            velocity.to_array(),
+            target.to_array(),
+        );
         (Vec3::from_array(value), Vec3::from_array(velocity))
     }
+}
+
+/// Per component: a step that carries a value across zero away from its target's side (an
+/// overshoot) stops at zero with that component's velocity cleared. Crossing toward a target
+/// on the other side is left alone: it was asked for.
+#[inline]
+pub(crate) fn stop_at_zero<const N: usize>(
+    before: [f32; N],
+    mut after: [f32; N],
+    mut velocity: [f32; N],
+    target: [f32; N],
+) -> ([f32; N], [f32; N]) {
+    for i in 0..N {
+        let (b, a, t) = (before[i], after[i], target[i]);
+        if (b >= 0.0 && a < 0.0 && t >= 0.0) || (b <= 0.0 && a > 0.0 && t <= 0.0) {
+            after[i] = 0.0;
+            velocity[i] = 0.0;
+        }
+    }
+    (after, velocity)
 }
 
 /// `Transform::scale` with no constraint: overshoot may carry it through zero (a mirror flip).

@@ -1,0 +1,229 @@
+//! Followers: a camera (or anything) that springs after another entity and looks at it.
+
+use bevy::prelude::*;
+
+use crate::component::{RotationSpring, SpringClock, TranslationSpring};
+use crate::plugin::SpringSettings;
+
+/// How the followed entity moves, which decides how its motion is sampled.
+#[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub enum TargetMotion {
+    /// It moves in `Update` (or anywhere once per frame): its velocity is its displacement over
+    /// the frame.
+    #[default]
+    PerFrame,
+    /// It moves in `FixedUpdate` (fixed-timestep gameplay or physics): it is sampled after each
+    /// fixed step, and between steps followed along its last fixed-step velocity by the
+    /// overstep, so uneven frames over a 64 Hz simulation give a smooth, exact steady lag
+    /// instead of a target that stands still one frame and jumps two steps the next.
+    FixedTimestep,
+}
+
+/// The last two fixed-step positions of a followed entity.
+#[derive(Reflect, Debug, Default, Clone, Copy, PartialEq)]
+struct FixedSamples {
+    previous: Option<Vec3>,
+    latest: Option<Vec3>,
+}
+
+/// Makes this entity follow `target` with its [`TranslationSpring`], at `offset` from it, and
+/// optionally look at it with its [`RotationSpring`]: camera smoothing.
+///
+/// Every frame, after gameplay moved the target (in `Update` or `FixedUpdate`), the follower's
+/// spring is retargeted to the target's position plus `offset`, and given the target's velocity
+/// so the step follows a moving target exactly (the steady lag `c·v/k` is reproduced at any
+/// frame rate, with no jitter from uneven frames). The follower reads the target's `Transform`
+/// in the same frame (no one-frame lag); for a target with a parent the parent's last
+/// `GlobalTransform` places it. The follower itself should be a root entity (its springs move
+/// its local `Transform`).
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn(mut commands: Commands) {
+///     let player = commands.spawn(Transform::default()).id();
+///     commands.spawn((
+///         Camera3d::default(),
+///         Transform::from_xyz(0.0, 4.0, 8.0),
+///         TranslationSpring::new(Spring::smooth(), Vec3::new(0.0, 4.0, 8.0)),
+///         RotationSpring::new(Spring::smooth(), Quat::IDENTITY),
+///         SpringFollow::new(player, Vec3::new(0.0, 4.0, 8.0))
+///             .looking_at(Vec3::Y)
+///             .moving_in_fixed_update(),
+///     ));
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Clone)]
+#[reflect(Component)]
+pub struct SpringFollow {
+    /// The entity to follow.
+    pub target: Entity,
+    /// Where to be, relative to the target, in world space.
+    pub offset: Vec3,
+    /// If set, turn the [`RotationSpring`] to look at the target plus this offset.
+    pub look_at: Option<Vec3>,
+    /// The up direction when looking at the target.
+    pub up: Dir3,
+    /// How the target moves.
+    pub motion: TargetMotion,
+    /// Where the target was last frame (`PerFrame`).
+    last_frame_position: Option<Vec3>,
+    /// The target's last fixed-step positions (`FixedTimestep`).
+    fixed: FixedSamples,
+    /// Where the target is (continuously) this frame: what the look-at aims at.
+    current: Option<Vec3>,
+}
+
+impl SpringFollow {
+    /// Follow `target` at `offset` from it, without turning, sampling it once per frame.
+    #[must_use]
+    pub fn new(target: Entity, offset: Vec3) -> Self {
+        Self {
+            target,
+            offset,
+            look_at: None,
+            up: Dir3::Y,
+            motion: TargetMotion::PerFrame,
+            last_frame_position: None,
+            fixed: FixedSamples::default(),
+            current: None,
+        }
+    }
+
+    /// Also look at the target plus `point_offset` (needs a [`RotationSpring`]).
+    #[must_use]
+    pub fn looking_at(mut self, point_offset: Vec3) -> Self {
+        self.look_at = Some(point_offset);
+        self
+    }
+
+    /// The target moves in `FixedUpdate`: see [`TargetMotion::FixedTimestep`].
+    #[must_use]
+    pub fn moving_in_fixed_update(mut self) -> Self {
+        self.motion = TargetMotion::FixedTimestep;
+        self
+    }
+}
+
+/// The world position of `entity`: its `Transform`, placed by its parent's `GlobalTransform`.
+fn world_position(
+    entity: Entity,
+    transforms: &Query<(&Transform, Option<&ChildOf>)>,
+    globals: &Query<&GlobalTransform>,
+) -> Option<Vec3> {
+    let (transform, parent) = transforms.get(entity).ok()?;
+    Some(
+        match parent.and_then(|parent| globals.get(parent.parent()).ok()) {
+            Some(parent) => parent.transform_point(transform.translation),
+            None => transform.translation,
+        },
+    )
+}
+
+/// After each fixed step: record where fixed-timestep targets are.
+pub(crate) fn sample_fixed_targets(
+    mut followers: Query<&mut SpringFollow>,
+    transforms: Query<(&Transform, Option<&ChildOf>)>,
+    globals: Query<&GlobalTransform>,
+) {
+    for mut follow in &mut followers {
+        if follow.motion != TargetMotion::FixedTimestep {
+            continue;
+        }
+        if let Some(position) = world_position(follow.target, &transforms, &globals) {
+            let latest = follow.fixed.latest.replace(position);
+            follow.fixed.previous = latest;
+        }
+    }
+}
+
+/// Before the translation springs step: aim every follower's spring at its target, with the
+/// target's velocity.
+pub(crate) fn follow_targets(
+    time: Res<Time>,
+    real_time: Res<Time<Real>>,
+    fixed_time: Res<Time<Fixed>>,
+    settings: Res<SpringSettings>,
+    mut followers: Query<(&mut SpringFollow, &mut TranslationSpring)>,
+    transforms: Query<(&Transform, Option<&ChildOf>)>,
+    globals: Query<&GlobalTransform>,
+) {
+    for (mut follow, mut spring) in &mut followers {
+        let (position, velocity) = match follow.motion {
+            TargetMotion::PerFrame => {
+                let Some(position) = world_position(follow.target, &transforms, &globals) else {
+                    continue;
+                };
+                let dt = match spring.clock().unwrap_or(settings.default_clock) {
+                    SpringClock::Game => time.delta_secs(),
+                    SpringClock::Real => real_time.delta_secs(),
+                };
+                let velocity = match follow.last_frame_position {
+                    Some(last) if dt > 0.0 => (position - last) / dt,
+                    _ => Vec3::ZERO,
+                };
+                follow.last_frame_position = Some(position);
+                (position, velocity)
+            }
+            TargetMotion::FixedTimestep => match follow.fixed {
+                FixedSamples {
+                    previous: Some(previous),
+                    latest: Some(latest),
+                } => {
+                    // The target moved from `previous` to `latest` over one fixed step, and
+                    // `overstep` seconds of that motion have passed since.
+                    let velocity = (latest - previous) / fixed_time.timestep().as_secs_f32();
+                    (
+                        latest + velocity * fixed_time.overstep().as_secs_f32(),
+                        velocity,
+                    )
+                }
+                FixedSamples {
+                    latest: Some(latest),
+                    ..
+                } => (latest, Vec3::ZERO),
+                _ => {
+                    let Some(position) = world_position(follow.target, &transforms, &globals)
+                    else {
+                        continue;
+                    };
+                    (position, Vec3::ZERO)
+                }
+            },
+        };
+        follow.current = Some(position);
+        let goal = position + follow.offset;
+        // A non-finite target position is refused by the spring (with a warning).
+        if spring.target() != goal {
+            let _ = spring.set_target(goal);
+        }
+        if spring.target_velocity() != velocity {
+            let _ = spring.set_target_velocity(velocity);
+        }
+    }
+}
+
+/// After the translation springs stepped, before the rotation springs do: turn followers that
+/// look at their target toward it from where they now are.
+pub(crate) fn aim_followers(
+    mut followers: Query<(&SpringFollow, &Transform, &mut RotationSpring)>,
+) {
+    for (follow, transform, mut spring) in &mut followers {
+        let (Some(look_at), Some(target)) = (follow.look_at, follow.current) else {
+            continue;
+        };
+        let point = target + look_at;
+        if point.distance_squared(transform.translation) <= f32::EPSILON {
+            continue;
+        }
+        let rotation = transform.looking_at(point, follow.up).rotation;
+        if spring.target() != rotation {
+            let _ = spring.set_target(rotation);
+        }
+    }
+}

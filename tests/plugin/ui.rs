@@ -1,0 +1,141 @@
+//! UI and colour properties: pixels, rotations, and colours that stay in range.
+
+use bevy::color::Oklaba;
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+use bevy_sprung::{NodeLeftSpring, UiTransformRotation};
+
+use crate::harness::{app, asleep, run};
+
+#[test]
+fn ui_transform_and_node_geometry_spring_in_pixels() {
+    let mut app = app(60);
+    let entity = app
+        .world_mut()
+        .spawn((
+            Node {
+                width: Val::Px(100.0),
+                height: Val::Px(40.0),
+                left: Val::Percent(10.0),
+                ..default()
+            },
+            UiTransform::default(),
+            NodeSizeSpring::new(Spring::snappy(), Vec2::new(200.0, 60.0)),
+            NodeLeftSpring::new(Spring::snappy(), 30.0),
+            UiTranslationSpring::new(Spring::bouncy(), Vec2::new(0.0, -8.0)),
+            UiScaleSpring::new(Spring::bouncy(), Vec2::splat(1.1)),
+            UiRotationSpring::new(Spring::smooth(), Rot2::degrees(15.0)),
+        ))
+        .id();
+    run(&mut app, 5);
+    let node = app.world().get::<Node>(entity).unwrap().clone();
+    let Val::Px(width) = node.width else {
+        panic!("width {:?}", node.width)
+    };
+    assert!(width > 100.0 && width < 200.0);
+    run(&mut app, 300);
+    let node = app.world().get::<Node>(entity).unwrap().clone();
+    assert_eq!(
+        (node.width, node.height, node.left),
+        (Val::Px(200.0), Val::Px(60.0), Val::Px(30.0))
+    );
+    let transform = *app.world().get::<UiTransform>(entity).unwrap();
+    assert_eq!(
+        transform.translation,
+        Val2::new(Val::Px(0.0), Val::Px(-8.0))
+    );
+    assert_eq!(transform.scale, Vec2::splat(1.1));
+    assert_eq!(transform.rotation, Rot2::degrees(15.0));
+    assert!(asleep::<UiTransformRotation>(&app, entity));
+}
+
+#[test]
+fn ui_rotation_takes_the_short_way() {
+    let mut app = app(60);
+    let entity = app
+        .world_mut()
+        .spawn((
+            UiTransform::from_rotation(Rot2::degrees(170.0)),
+            UiRotationSpring::new(Spring::smooth(), Rot2::degrees(-170.0)),
+        ))
+        .id();
+    for _ in 0..120 {
+        app.update();
+        let angle = app
+            .world()
+            .get::<UiTransform>(entity)
+            .unwrap()
+            .rotation
+            .as_degrees();
+        assert!(angle.abs() >= 169.99, "went the long way: {angle}°");
+    }
+}
+
+/// A very bouncy colour spring overshoots, but its channels and alpha never leave their range;
+/// the motion is an even blend in Oklab and lands exactly on the target.
+#[test]
+fn colours_stay_in_range_and_land_exactly() {
+    let bouncy = Spring::from_natural_frequency(25.0, 0.05).unwrap();
+    let mut app = app(60);
+    let target = Color::srgba(1.0, 0.0, 0.0, 1.0);
+    let entity = app
+        .world_mut()
+        .spawn((
+            BackgroundColor(Color::srgba(0.0, 0.0, 1.0, 0.2)),
+            BackgroundColorSpring::new(bouncy, target),
+            Sprite::default(),
+            SpriteColorSpring::new(bouncy, Color::srgba(0.0, 1.0, 0.0, 0.0)),
+            TextColor(Color::WHITE),
+            TextColorSpring::new(bouncy, Color::BLACK),
+        ))
+        .id();
+    for _ in 0..600 {
+        app.update();
+        let world = app.world();
+        for color in [
+            world.get::<BackgroundColor>(entity).unwrap().0,
+            world.get::<Sprite>(entity).unwrap().color,
+            world.get::<TextColor>(entity).unwrap().0,
+        ] {
+            let linear = LinearRgba::from(color);
+            for channel in [linear.red, linear.green, linear.blue, linear.alpha] {
+                assert!((0.0..=1.0).contains(&channel), "{color:?} out of range");
+            }
+        }
+    }
+    let world = app.world();
+    assert_eq!(world.get::<BackgroundColor>(entity).unwrap().0, target);
+    assert_eq!(world.get::<TextColor>(entity).unwrap().0, Color::BLACK);
+}
+
+/// Halfway through a critically damped blend from black to white the colour is a perceptual
+/// mid-grey (Oklab lightness ≈ 0.5), not sRGB's mid value.
+#[test]
+fn colours_blend_in_oklab() {
+    let spring = Spring::from_natural_frequency(8.0, 1.0).unwrap();
+    let mut app = app(60);
+    let entity = app
+        .world_mut()
+        .spawn((
+            BackgroundColor(Color::BLACK),
+            BackgroundColorSpring::new(spring, Color::WHITE),
+        ))
+        .id();
+    let mut lightness = Vec::new();
+    for _ in 0..60 {
+        app.update();
+        let color = app.world().get::<BackgroundColor>(entity).unwrap().0;
+        lightness.push(Oklaba::from(color).lightness);
+    }
+    // Lightness follows the exact critically damped response 1 − f0(t), to f32 rounding.
+    let dt = 1.0 / 60.0_f32;
+    for (frame, &l) in lightness.iter().enumerate().skip(1) {
+        let t = dt * frame as f32;
+        let [[f0, _], _] = spring.transition(t).matrix();
+        assert!(
+            (l - (1.0 - f0)).abs() < 2e-3,
+            "frame {frame}: L = {l} vs {}",
+            1.0 - f0
+        );
+    }
+}
