@@ -1,0 +1,344 @@
+//! A menu that springs instead of tweening: the side panel slides and fades in and out, its
+//! buttons lift and glow on hover and squash on press, and a badge pops. Every animation is a
+//! spring component on the node; retargeting mid-animation (hover, then leave at once) bends
+//! the motion smoothly instead of restarting a tween.
+//!
+//! Click "Menu" (or press M) to open and close the panel. Without mouse input the example plays
+//! a short scripted tour, so it shows the same motion in CI screenshots.
+//!
+//! ```text
+//! cargo run --example ui
+//! ```
+
+use bevy::input::mouse::MouseMotion;
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+
+const PANEL_WIDTH: f32 = 300.0;
+const IDLE: Color = Color::srgb(0.16, 0.18, 0.24);
+const HOVERED: Color = Color::srgb(0.25, 0.42, 0.78);
+const PRESSED: Color = Color::srgb(0.12, 0.26, 0.55);
+
+/// The panel that slides in.
+#[derive(Component)]
+struct Panel;
+
+/// The button that opens and closes the panel.
+#[derive(Component)]
+struct MenuButton;
+
+/// The badge that pops when the panel opens.
+#[derive(Component)]
+struct Badge;
+
+/// What a button looks like it is doing: from `Interaction`, or from the tour.
+#[derive(Component, Default, Clone, Copy, PartialEq)]
+enum Look {
+    #[default]
+    Idle,
+    Hovered,
+    Pressed,
+}
+
+#[derive(Resource, Default)]
+struct Menu {
+    open: bool,
+}
+
+/// The scripted tour runs until the user moves the mouse or presses a key.
+#[derive(Resource)]
+struct Tour {
+    running: bool,
+    elapsed: f32,
+}
+
+fn main() {
+    App::new()
+        .add_plugins((
+            DefaultPlugins.set(WindowPlugin {
+                primary_window: Some(Window {
+                    title: "sprung: a springy menu".into(),
+                    resolution: (1280, 720).into(),
+                    ..default()
+                }),
+                ..default()
+            }),
+            // UI keeps animating while the game is paused: springs on the real clock.
+            SpringPlugin::default().with_clock(SpringClock::Real),
+        ))
+        .insert_resource(ClearColor(Color::srgb(0.07, 0.08, 0.1)))
+        .init_resource::<Menu>()
+        .insert_resource(Tour {
+            running: true,
+            elapsed: 0.0,
+        })
+        .add_systems(Startup, setup)
+        .add_systems(
+            Update,
+            (tour, interactions, toggle, animate_menu, animate_buttons).chain(),
+        )
+        .run();
+}
+
+/// The layout of a panel button.
+fn panel_button() -> Node {
+    Node {
+        width: Val::Px(240.0),
+        height: Val::Px(52.0),
+        margin: UiRect::vertical(Val::Px(8.0)),
+        justify_content: JustifyContent::Center,
+        align_items: AlignItems::Center,
+        border: UiRect::all(Val::Px(2.0)),
+        border_radius: BorderRadius::all(Val::Px(10.0)),
+        ..default()
+    }
+}
+
+/// A button with its springs: background, border, scale and lift, and its label's colour.
+fn button(label: &str, node: Node) -> impl Bundle {
+    (
+        Button,
+        Look::Idle,
+        node,
+        BackgroundColor(IDLE),
+        BorderColor::all(Color::srgb(0.3, 0.33, 0.4)),
+        UiTransform::default(),
+        // One spring per property the button animates.
+        BackgroundColorSpring::new(Spring::snappy(), IDLE),
+        BorderColorSpring::new(Spring::snappy(), Color::srgb(0.3, 0.33, 0.4)),
+        UiScaleSpring::new(Spring::bouncy(), Vec2::ONE),
+        UiTranslationSpring::new(Spring::snappy(), Vec2::ZERO),
+        children![(
+            Text::new(label),
+            TextFont::from_font_size(20.0),
+            TextColor(Color::srgb(0.8, 0.82, 0.88)),
+            TextColorSpring::new(Spring::snappy(), Color::srgb(0.8, 0.82, 0.88)),
+        )],
+    )
+}
+
+fn setup(mut commands: Commands) {
+    commands.spawn(Camera2d);
+    // The side panel starts closed: off-screen to the left and transparent.
+    commands.spawn((
+        Panel,
+        Node {
+            position_type: PositionType::Absolute,
+            left: Val::Px(0.0),
+            top: Val::Px(0.0),
+            width: Val::Px(PANEL_WIDTH),
+            height: Val::Percent(100.0),
+            flex_direction: FlexDirection::Column,
+            align_items: AlignItems::Center,
+            padding: UiRect::top(Val::Px(96.0)),
+            ..default()
+        },
+        BackgroundColor(Color::srgba(0.1, 0.11, 0.15, 0.0)),
+        UiTransform::from_translation(Val2::px(-PANEL_WIDTH, 0.0)),
+        UiTranslationSpring::new(Spring::smooth(), Vec2::new(-PANEL_WIDTH, 0.0)),
+        BackgroundColorSpring::new(Spring::smooth(), Color::srgba(0.1, 0.11, 0.15, 0.0)),
+        children![
+            button("New game", panel_button()),
+            button("Continue", panel_button()),
+            button("Settings", panel_button()),
+            button("Quit", panel_button()),
+        ],
+    ));
+    commands
+        .spawn((
+            MenuButton,
+            button(
+                "Menu",
+                Node {
+                    position_type: PositionType::Absolute,
+                    right: Val::Px(24.0),
+                    top: Val::Px(20.0),
+                    width: Val::Px(140.0),
+                    height: Val::Px(48.0),
+                    justify_content: JustifyContent::Center,
+                    align_items: AlignItems::Center,
+                    border: UiRect::all(Val::Px(2.0)),
+                    border_radius: BorderRadius::all(Val::Px(10.0)),
+                    ..default()
+                },
+            ),
+        ))
+        .with_child((
+            Badge,
+            Node {
+                position_type: PositionType::Absolute,
+                right: Val::Px(-10.0),
+                top: Val::Px(-10.0),
+                width: Val::Px(24.0),
+                height: Val::Px(24.0),
+                justify_content: JustifyContent::Center,
+                align_items: AlignItems::Center,
+                border_radius: BorderRadius::all(Val::Px(12.0)),
+                ..default()
+            },
+            BackgroundColor(Color::srgb(0.9, 0.3, 0.35)),
+            UiTransform::from_scale(Vec2::ZERO),
+            // Pops from nothing; `UiScaleSpring` never passes through zero, so closing lands
+            // on 0 instead of flipping.
+            UiScaleSpring::new(Spring::bouncy(), Vec2::ZERO),
+            children![(Text::new("3"), TextFont::from_font_size(14.0))],
+        ));
+    commands.spawn((
+        Text::new("M or click Menu: open / close. Hover and press the buttons."),
+        TextFont::from_font_size(16.0),
+        TextColor(Color::srgb(0.6, 0.63, 0.7)),
+        Node {
+            position_type: PositionType::Absolute,
+            bottom: Val::Px(14.0),
+            right: Val::Px(20.0),
+            ..default()
+        },
+    ));
+}
+
+/// The scripted tour: open, hover down the buttons, press one, close. Any mouse motion or key
+/// hands control to the user.
+fn tour(
+    time: Res<Time<Real>>,
+    mut tour: ResMut<Tour>,
+    mut menu: ResMut<Menu>,
+    mut motion: MessageReader<MouseMotion>,
+    keys: Res<ButtonInput<KeyCode>>,
+    mut buttons: Query<&mut Look, (With<Button>, Without<MenuButton>)>,
+) {
+    if motion.read().count() > 0 || keys.get_just_pressed().count() > 0 {
+        tour.running = false;
+    }
+    if !tour.running {
+        return;
+    }
+    tour.elapsed += time.delta_secs();
+    let t = tour.elapsed % 7.0;
+    menu.open = (0.3..5.5).contains(&t);
+    // Hover each button in turn for 0.6 s from 1.2 s on; press the third.
+    let hovered = hovered_button(t);
+    for (index, mut look) in buttons.iter_mut().enumerate() {
+        let wanted = if hovered == Some(index) {
+            if index == 2 && (t - 1.2) % 0.6 > 0.3 {
+                Look::Pressed
+            } else {
+                Look::Hovered
+            }
+        } else {
+            Look::Idle
+        };
+        if *look != wanted {
+            *look = wanted;
+        }
+    }
+}
+
+/// Which button the tour hovers at `t` seconds into its loop: one every 0.6 s from 1.2 s on.
+#[expect(
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    reason = "a small non-negative step count"
+)]
+fn hovered_button(t: f32) -> Option<usize> {
+    (t >= 1.2).then(|| ((t - 1.2) / 0.6) as usize)
+}
+
+/// With the user in control, buttons look like their `Interaction`.
+fn interactions(
+    tour: Res<Tour>,
+    mut buttons: Query<(&Interaction, &mut Look), Changed<Interaction>>,
+) {
+    if tour.running {
+        return;
+    }
+    for (interaction, mut look) in &mut buttons {
+        *look = match interaction {
+            Interaction::Pressed => Look::Pressed,
+            Interaction::Hovered => Look::Hovered,
+            Interaction::None => Look::Idle,
+        };
+    }
+}
+
+fn toggle(
+    keys: Res<ButtonInput<KeyCode>>,
+    mut menu: ResMut<Menu>,
+    pressed: Query<&Interaction, (With<MenuButton>, Changed<Interaction>)>,
+) {
+    let clicked = pressed.iter().any(|i| *i == Interaction::Pressed);
+    if keys.just_pressed(KeyCode::KeyM) || clicked {
+        menu.open = !menu.open;
+    }
+}
+
+/// Open or close: the panel slides and fades, the badge pops. Only targets change; the springs
+/// do the rest, from wherever they are.
+fn animate_menu(
+    menu: Res<Menu>,
+    mut panel: Single<(&mut UiTranslationSpring, &mut BackgroundColorSpring), With<Panel>>,
+    mut badge: Single<&mut UiScaleSpring, With<Badge>>,
+) {
+    if !menu.is_changed() {
+        return;
+    }
+    let (slide, fade) = &mut *panel;
+    let (x, alpha, badge_scale) = if menu.open {
+        (0.0, 0.92, 1.0)
+    } else {
+        (-PANEL_WIDTH, 0.0, 0.0)
+    };
+    let _ = slide.set_target(Vec2::new(x, 0.0));
+    let _ = fade.set_target(Color::srgba(0.1, 0.11, 0.15, alpha));
+    let _ = badge.set_target(Vec2::splat(badge_scale));
+}
+
+/// Hover lifts and lights a button; press squashes and darkens it.
+fn animate_buttons(
+    mut buttons: Query<
+        (
+            &Look,
+            &Children,
+            &mut BackgroundColorSpring,
+            &mut BorderColorSpring,
+            &mut UiScaleSpring,
+            &mut UiTranslationSpring,
+        ),
+        Changed<Look>,
+    >,
+    mut labels: Query<&mut TextColorSpring>,
+) {
+    for (look, children, mut background, mut border, mut scale, mut lift) in &mut buttons {
+        let (color, edge, size, rise, text) = match look {
+            Look::Idle => (
+                IDLE,
+                Color::srgb(0.3, 0.33, 0.4),
+                1.0,
+                0.0,
+                Color::srgb(0.8, 0.82, 0.88),
+            ),
+            Look::Hovered => (
+                HOVERED,
+                Color::srgb(0.55, 0.7, 1.0),
+                1.06,
+                -3.0,
+                Color::WHITE,
+            ),
+            Look::Pressed => (
+                PRESSED,
+                Color::srgb(0.4, 0.55, 0.9),
+                0.94,
+                1.0,
+                Color::srgb(0.85, 0.9, 1.0),
+            ),
+        };
+        let _ = background.set_target(color);
+        let _ = border.set_target(edge);
+        let _ = scale.set_target(Vec2::splat(size));
+        let _ = lift.set_target(Vec2::new(0.0, rise));
+        for child in children {
+            if let Ok(mut label) = labels.get_mut(*child) {
+                let _ = label.set_target(text);
+            }
+        }
+    }
+}
