@@ -166,23 +166,16 @@ pub(crate) struct Reference {
 }
 
 impl Reference {
-    /// `(|computed − exact|)/(u·(|exact| + sensitivity))` per matrix entry: the error in units
-    /// of roundoff times the condition number, with `floor` added to the allowance for results
-    /// at the underflow threshold.
+    /// `|computed − exact|/(u·(|exact| + sensitivity) + floor)` per matrix entry: the error in
+    /// units of roundoff times the condition number, with `floor` added to the allowance for
+    /// results at the underflow threshold.
     pub(crate) fn matrix_error_ratios(
         &self,
         computed: [[f64; 2]; 2],
         u: f64,
         floor: f64,
     ) -> [f64; 4] {
-        ratios(
-            &self.matrix,
-            &self.matrix,
-            &self.sensitivity,
-            computed,
-            u,
-            floor,
-        )
+        ratios(&self.matrix, &self.sensitivity, computed, u, floor)
     }
 
     /// The same for `D = M − I`, whose entries are measured against their own size.
@@ -192,20 +185,19 @@ impl Reference {
         u: f64,
         floor: f64,
     ) -> [f64; 4] {
-        ratios(
-            &self.increment,
-            &self.increment,
-            &self.sensitivity,
-            computed,
-            u,
-            floor,
-        )
+        ratios(&self.increment, &self.sensitivity, computed, u, floor)
+    }
+
+    /// The same for the forcing gain `g0`.
+    pub(crate) fn g0_error_ratio(&self, computed: f64, u: f64, floor: f64) -> f64 {
+        let error = (computed - self.g0).abs();
+        let allowance = u * (self.g0.abs() + self.g0_sensitivity) + floor;
+        if error == 0.0 { 0.0 } else { error / allowance }
     }
 }
 
 fn ratios(
     exact: &[[f64; 2]; 2],
-    magnitude: &[[f64; 2]; 2],
     sensitivity: &[[f64; 2]; 2],
     computed: [[f64; 2]; 2],
     u: f64,
@@ -215,7 +207,7 @@ fn ratios(
     for i in 0..2 {
         for j in 0..2 {
             let error = (computed[i][j] - exact[i][j]).abs();
-            let allowance = u * (magnitude[i][j].abs() + sensitivity[i][j]) + floor;
+            let allowance = u * (exact[i][j].abs() + sensitivity[i][j]) + floor;
             out[2 * i + j] = if error == 0.0 { 0.0 } else { error / allowance };
         }
     }
