@@ -8,6 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
+binaries="${CARGO_TARGET_DIR:-$root/target}/debug/examples"
 save=""
 if [ "${1:-}" = "--save" ]; then save=$(realpath -m "$2"); mkdir -p "$save"; fi
 
@@ -19,7 +20,7 @@ for source in examples/*.rs; do
     config="$root/.ci/examples/$name.ron"
     if [ "$name" = trajectory ]; then
         # The core example prints a table; it has no window.
-        "$root/target/debug/examples/$name" > /dev/null
+        "$binaries/$name" > /dev/null
         echo "$name: ran"
         continue
     fi
@@ -32,7 +33,7 @@ for source in examples/*.rs; do
     rm -rf "$out" && mkdir -p "$out"
     start=$(date +%s)
     if ! (cd "$out" && CI_TESTING_CONFIG="$config" timeout 900 \
-            xvfb-run -a -s "-screen 0 1280x800x24" "$root/target/debug/examples/$name" \
+            xvfb-run -a -s "-screen 0 1280x800x24" "$binaries/$name" \
             > run.log 2>&1); then
         echo "$name: FAILED to run (log: .ci/out/$name/run.log)" >&2
         tail -n 20 "$out/run.log" >&2
