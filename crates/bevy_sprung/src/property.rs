@@ -24,6 +24,16 @@ pub trait SpringVector:
     #[must_use]
     fn length(self) -> f32;
 
+    /// The squared Euclidean length; like the length, it is not finite when a component is not.
+    /// The rest check compares it first and takes [`length`](Self::length) only near rest, and
+    /// the step takes a finite squared velocity for a finite velocity. The default squares the
+    /// length.
+    #[must_use]
+    fn length_squared(self) -> f32 {
+        let length = self.length();
+        length * length
+    }
+
     /// Whether every component is finite.
     #[must_use]
     fn is_finite(self) -> bool;
@@ -33,6 +43,11 @@ impl SpringVector for f32 {
     #[inline]
     fn length(self) -> f32 {
         self.abs()
+    }
+
+    #[inline]
+    fn length_squared(self) -> f32 {
+        self * self
     }
 
     #[inline]
@@ -47,6 +62,11 @@ macro_rules! glam_vector {
             #[inline]
             fn length(self) -> f32 {
                 <$t>::length(self)
+            }
+
+            #[inline]
+            fn length_squared(self) -> f32 {
+                <$t>::length_squared(self)
             }
 
             #[inline]
