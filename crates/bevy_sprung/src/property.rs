@@ -37,6 +37,30 @@ pub trait SpringVector:
     /// Whether every component is finite.
     #[must_use]
     fn is_finite(self) -> bool;
+
+    /// Per component: a step from `before` to `after` that carries the value across zero away
+    /// from `target`'s side (an overshoot) stops at zero, with that component of `velocity`
+    /// cleared. Crossing toward a target on the other side is left alone: it was asked for.
+    #[must_use]
+    fn stop_at_zero(before: Self, after: Self, velocity: Self, target: Self) -> (Self, Self);
+}
+
+/// [`SpringVector::stop_at_zero`] on the components.
+#[inline]
+fn stop_at_zero<const N: usize>(
+    before: [f32; N],
+    mut after: [f32; N],
+    mut velocity: [f32; N],
+    target: [f32; N],
+) -> ([f32; N], [f32; N]) {
+    for i in 0..N {
+        let (b, a, t) = (before[i], after[i], target[i]);
+        if (b >= 0.0 && a < 0.0 && t >= 0.0) || (b <= 0.0 && a > 0.0 && t <= 0.0) {
+            after[i] = 0.0;
+            velocity[i] = 0.0;
+        }
+    }
+    (after, velocity)
 }
 
 impl SpringVector for f32 {
@@ -53,6 +77,12 @@ impl SpringVector for f32 {
     #[inline]
     fn is_finite(self) -> bool {
         f32::is_finite(self)
+    }
+
+    #[inline]
+    fn stop_at_zero(before: f32, after: f32, velocity: f32, target: f32) -> (f32, f32) {
+        let ([value], [velocity]) = stop_at_zero([before], [after], [velocity], [target]);
+        (value, velocity)
     }
 }
 
@@ -72,6 +102,17 @@ macro_rules! glam_vector {
             #[inline]
             fn is_finite(self) -> bool {
                 <$t>::is_finite(self)
+            }
+
+            #[inline]
+            fn stop_at_zero(before: Self, after: Self, velocity: Self, target: Self) -> (Self, Self) {
+                let (value, velocity) = stop_at_zero(
+                    before.to_array(),
+                    after.to_array(),
+                    velocity.to_array(),
+                    target.to_array(),
+                );
+                (<$t>::from_array(value), <$t>::from_array(velocity))
             }
         }
     )*};
@@ -199,6 +240,10 @@ pub trait LinearProperty: TypePath + Send + Sync + 'static {
     /// The value, a vector.
     type Value: SpringVector;
 
+    /// Whether an overshoot may not carry a component across zero away from its target's side
+    /// (a scale that must not mirror): see [`SpringVector::stop_at_zero`]. `false` by default.
+    const NEVER_THROUGH_ZERO: bool = false;
+
     /// Tolerances at which a spring of this property counts as at rest.
     #[must_use]
     fn default_rest() -> RestThreshold<f32> {
@@ -257,6 +302,20 @@ impl<P: LinearProperty> SpringProperty for P {
     ) -> Self::Value {
         value + (new_offset - offset)
     }
+
+    #[inline]
+    fn constrain(
+        before: Self::Value,
+        after: Self::Value,
+        velocity: Self::Value,
+        target: Self::Value,
+    ) -> (Self::Value, Self::Value) {
+        if P::NEVER_THROUGH_ZERO {
+            SpringVector::stop_at_zero(before, after, velocity, target)
+        } else {
+            (after, velocity)
+        }
+    }
 }
 
 /// `Transform::translation`.
@@ -282,7 +341,8 @@ impl LinearProperty for Translation {
 /// with an angular velocity in rad/s.
 ///
 /// The offset is `log(target⁻¹·rotation)` taken in the hemisphere `w ≥ 0`, so the spring always
-/// turns the short way round; the same transition moves its three components.
+/// turns the short way round; the same transition moves its three components. It rests within
+/// a thousandth of a radian (0.06°) and a hundredth of a radian per second.
 #[derive(Reflect, Debug, Clone, Copy)]
 pub struct Rotation;
 
@@ -290,11 +350,6 @@ impl SpringProperty for Rotation {
     type Component = Transform;
     type Value = Quat;
     type Linear = Vec3;
-
-    /// A thousandth of a radian (0.06°) and a hundredth of a radian per second.
-    fn default_rest() -> RestThreshold<f32> {
-        RestThreshold::new(1e-3, 1e-2)
-    }
 
     #[inline]
     fn get(transform: &Transform) -> Quat {
@@ -356,10 +411,10 @@ pub fn rotation_vector(rotation: Quat) -> Vec3 {
 #[derive(Reflect, Debug, Clone, Copy)]
 pub struct Scale;
 
-impl SpringProperty for Scale {
+impl LinearProperty for Scale {
     type Component = Transform;
     type Value = Vec3;
-    type Linear = Vec3;
+    const NEVER_THROUGH_ZERO: bool = true;
 
     #[inline]
     fn default_rest() -> RestThreshold<f32> {
@@ -375,57 +430,6 @@ impl SpringProperty for Scale {
     fn set(transform: &mut Transform, value: Vec3) {
         transform.scale = value;
     }
-
-    #[inline]
-    fn is_finite(value: Vec3) -> bool {
-        value.is_finite()
-    }
-
-    #[inline]
-    fn offset(value: Vec3, target: Vec3) -> Vec3 {
-        value - target
-    }
-
-    #[inline]
-    fn at_offset(target: Vec3, offset: Vec3) -> Vec3 {
-        target + offset
-    }
-
-    #[inline]
-    fn advance(value: Vec3, _target: Vec3, offset: Vec3, new_offset: Vec3) -> Vec3 {
-        value + (new_offset - offset)
-    }
-
-    #[inline]
-    fn constrain(before: Vec3, after: Vec3, velocity: Vec3, target: Vec3) -> (Vec3, Vec3) {
-        let (value, velocity) = stop_at_zero(
-            before.to_array(),
-            after.to_array(),
-            velocity.to_array(),
-            target.to_array(),
-        );
-        (Vec3::from_array(value), Vec3::from_array(velocity))
-    }
-}
-
-/// Per component: a step that carries a value across zero away from its target's side (an
-/// overshoot) stops at zero with that component's velocity cleared. Crossing toward a target
-/// on the other side is left alone: it was asked for.
-#[inline]
-pub(crate) fn stop_at_zero<const N: usize>(
-    before: [f32; N],
-    mut after: [f32; N],
-    mut velocity: [f32; N],
-    target: [f32; N],
-) -> ([f32; N], [f32; N]) {
-    for i in 0..N {
-        let (b, a, t) = (before[i], after[i], target[i]);
-        if (b >= 0.0 && a < 0.0 && t >= 0.0) || (b <= 0.0 && a > 0.0 && t <= 0.0) {
-            after[i] = 0.0;
-            velocity[i] = 0.0;
-        }
-    }
-    (after, velocity)
 }
 
 /// `Transform::scale` with no constraint: overshoot may carry it through zero (a mirror flip).

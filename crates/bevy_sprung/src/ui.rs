@@ -10,7 +10,7 @@ use bevy::reflect::TypePath;
 use sprung::RestThreshold;
 
 use crate::component::PropertySpring;
-use crate::property::{LinearProperty, SpringProperty, stop_at_zero};
+use crate::property::{LinearProperty, SpringProperty};
 
 /// The pixels of a `Val::Px`, 0 for any other unit.
 #[inline]
@@ -55,14 +55,10 @@ impl LinearProperty for UiTransformTranslation {
 #[derive(TypePath, Debug, Clone, Copy)]
 pub struct UiTransformScale;
 
-impl SpringProperty for UiTransformScale {
+impl LinearProperty for UiTransformScale {
     type Component = UiTransform;
     type Value = Vec2;
-    type Linear = Vec2;
-
-    fn default_rest() -> RestThreshold<f32> {
-        RestThreshold::new(1e-3, 1e-2)
-    }
+    const NEVER_THROUGH_ZERO: bool = true;
 
     #[inline]
     fn get(transform: &UiTransform) -> Vec2 {
@@ -72,37 +68,6 @@ impl SpringProperty for UiTransformScale {
     #[inline]
     fn set(transform: &mut UiTransform, value: Vec2) {
         transform.scale = value;
-    }
-
-    #[inline]
-    fn is_finite(value: Vec2) -> bool {
-        value.is_finite()
-    }
-
-    #[inline]
-    fn offset(value: Vec2, target: Vec2) -> Vec2 {
-        value - target
-    }
-
-    #[inline]
-    fn at_offset(target: Vec2, offset: Vec2) -> Vec2 {
-        target + offset
-    }
-
-    #[inline]
-    fn advance(value: Vec2, _target: Vec2, offset: Vec2, new_offset: Vec2) -> Vec2 {
-        value + (new_offset - offset)
-    }
-
-    #[inline]
-    fn constrain(before: Vec2, after: Vec2, velocity: Vec2, target: Vec2) -> (Vec2, Vec2) {
-        let (value, velocity) = stop_at_zero(
-            before.to_array(),
-            after.to_array(),
-            velocity.to_array(),
-            target.to_array(),
-        );
-        (Vec2::from_array(value), Vec2::from_array(velocity))
     }
 }
 
