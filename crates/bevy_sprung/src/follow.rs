@@ -44,8 +44,8 @@ struct FixedSamples {
 ///
 /// fn spawn(mut commands: Commands) {
 ///     let player = commands.spawn(Transform::default()).id();
+///     // A camera (add `Camera3d` with Bevy's 3D features) that follows the player.
 ///     commands.spawn((
-///         Camera3d::default(),
 ///         Transform::from_xyz(0.0, 4.0, 8.0),
 ///         TranslationSpring::new(Spring::smooth(), Vec3::new(0.0, 4.0, 8.0)),
 ///         RotationSpring::new(Spring::smooth(), Quat::IDENTITY),
