@@ -1,52 +1,93 @@
-//! UI and colour properties: pixels, rotations, and colours that stay in range.
+//! UI and colour properties: lengths in their units, rotations, and colours that stay in range.
 
 use bevy::color::Oklaba;
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
-use bevy_sprung::{NodeLeftSpring, UiTransformRotation};
+use bevy_sprung::{NodeLeftSpring, NodeTopSpring, NodeWidthSpring, UiTransformRotation};
 
 use crate::harness::{app, asleep, run};
 
 #[test]
-fn ui_transform_and_node_geometry_spring_in_pixels() {
+fn ui_transform_and_node_geometry_spring_in_their_units() {
     let mut app = app(60);
     let entity = app
         .world_mut()
         .spawn((
             Node {
                 width: Val::Px(100.0),
-                height: Val::Px(40.0),
+                height: Val::Vh(40.0),
                 left: Val::Percent(10.0),
                 ..default()
             },
-            UiTransform::default(),
+            UiTransform {
+                translation: Val2::new(Val::Vw(0.0), Val::Auto),
+                ..default()
+            },
             NodeSizeSpring::new(Spring::snappy(), Vec2::new(200.0, 60.0)),
             NodeLeftSpring::new(Spring::snappy(), 30.0),
-            UiTranslationSpring::new(Spring::bouncy(), Vec2::new(0.0, -8.0)),
+            UiTranslationSpring::new(Spring::bouncy(), Vec2::new(5.0, -8.0)),
             UiScaleSpring::new(Spring::bouncy(), Vec2::splat(1.1)),
             UiRotationSpring::new(Spring::smooth(), Rot2::degrees(15.0)),
         ))
         .id();
     run(&mut app, 5);
     let node = app.world().get::<Node>(entity).unwrap().clone();
-    let Val::Px(width) = node.width else {
-        panic!("width {:?}", node.width)
+    let (Val::Px(width), Val::Vh(height), Val::Percent(left)) =
+        (node.width, node.height, node.left)
+    else {
+        panic!("a unit changed mid-flight: {node:?}")
     };
-    assert!(width > 100.0 && width < 200.0);
+    assert!(width > 100.0 && width < 200.0, "width {width}");
+    assert!(height > 40.0 && height < 60.0, "height {height}");
+    assert!(left > 10.0 && left < 30.0, "left {left}");
     run(&mut app, 300);
     let node = app.world().get::<Node>(entity).unwrap().clone();
     assert_eq!(
         (node.width, node.height, node.left),
-        (Val::Px(200.0), Val::Px(60.0), Val::Px(30.0))
+        (Val::Px(200.0), Val::Vh(60.0), Val::Percent(30.0))
     );
     let transform = *app.world().get::<UiTransform>(entity).unwrap();
+    // `Auto` has no number to keep: it is read as 0 and becomes pixels.
     assert_eq!(
         transform.translation,
-        Val2::new(Val::Px(0.0), Val::Px(-8.0))
+        Val2::new(Val::Vw(5.0), Val::Px(-8.0))
     );
     assert_eq!(transform.scale, Vec2::splat(1.1));
     assert_eq!(transform.rotation, Rot2::degrees(15.0));
     assert!(asleep::<UiTransformRotation>(&app, entity));
+}
+
+/// A bouncy collapse to zero size lands on 0 without a negative width on the way (what layout
+/// would clamp, visibly, for a frame), while a position overshoots freely.
+#[test]
+fn node_sizes_do_not_pass_through_zero() {
+    let bouncy = Spring::from_natural_frequency(20.0, 0.1).unwrap();
+    let mut app = app(60);
+    let entity = app
+        .world_mut()
+        .spawn((
+            Node {
+                width: Val::Percent(50.0),
+                top: Val::Px(40.0),
+                ..default()
+            },
+            NodeWidthSpring::new(bouncy, 0.0),
+            NodeTopSpring::new(bouncy, 0.0),
+        ))
+        .id();
+    let mut overshot = false;
+    for _ in 0..240 {
+        app.update();
+        let node = app.world().get::<Node>(entity).unwrap();
+        let Val::Percent(width) = node.width else {
+            panic!("width changed unit: {:?}", node.width)
+        };
+        assert!(width >= 0.0, "width went negative: {width}");
+        overshot |= matches!(node.top, Val::Px(top) if top < -1.0);
+    }
+    assert!(overshot, "the position spring should overshoot past 0");
+    let node = app.world().get::<Node>(entity).unwrap();
+    assert_eq!((node.width, node.top), (Val::Percent(0.0), Val::Px(0.0)));
 }
 
 #[test]

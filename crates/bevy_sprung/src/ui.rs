@@ -1,8 +1,10 @@
-//! UI properties: `UiTransform` and `Node` geometry, in pixels.
+//! UI properties: `UiTransform` and `Node` geometry, in the units they are laid out in.
 //!
-//! `Node` fields and `UiTransform::translation` are `Val`s. These properties spring
-//! `Val::Px`: a field in another unit (`Percent`, `Auto`, …) is read as 0 px and written back as
-//! `Val::Px`, so spring only fields you lay out in pixels.
+//! `Node` fields and `UiTransform::translation` are `Val`s. Their springs move the number of
+//! each field in the unit the field has (`Px`, `Percent`, `Vw`, `Vh`, `VMin` or `VMax`), as a
+//! tween between two values of one unit would: a `left: Val::Percent(10.0)` sprung to `50.0`
+//! slides to 50 %. Units are not converted into one another (that needs the layout), so the
+//! target is in the field's unit; an `Auto` field is read as 0 and written in pixels.
 
 use bevy::math::{Rot2, Vec2};
 use bevy::prelude::*;
@@ -12,22 +14,50 @@ use sprung::RestThreshold;
 use crate::component::PropertySpring;
 use crate::property::{LinearProperty, SpringProperty};
 
-/// The pixels of a `Val::Px`, 0 for any other unit.
+/// The number of a length in its own unit (pixels for `Px`, percent for `Percent`, …); 0 for
+/// `Auto`.
 #[inline]
-fn px(value: Val) -> f32 {
+fn number(value: Val) -> f32 {
     match value {
-        Val::Px(pixels) => pixels,
-        _ => 0.0,
+        Val::Px(n) | Val::Percent(n) | Val::Vw(n) | Val::Vh(n) | Val::VMin(n) | Val::VMax(n) => n,
+        Val::Auto => 0.0,
     }
 }
 
-/// Half a pixel is invisible; a pixel per second is a crawl.
-fn pixel_rest() -> RestThreshold<f32> {
-    RestThreshold::new(0.5, 1.0)
+/// `number` in the unit of `old`, the field it replaces (pixels where `old` is `Auto`).
+#[inline]
+fn in_unit_of(old: Val, number: f32) -> Val {
+    match old {
+        Val::Px(_) | Val::Auto => Val::Px(number),
+        Val::Percent(_) => Val::Percent(number),
+        Val::Vw(_) => Val::Vw(number),
+        Val::Vh(_) => Val::Vh(number),
+        Val::VMin(_) => Val::VMin(number),
+        Val::VMax(_) => Val::VMax(number),
+    }
 }
 
-/// `UiTransform::translation` in pixels: moves a node without relayout (a hover lift, a
-/// slide-in).
+/// Writes `value` into the length `field`, keeping its unit.
+#[inline]
+fn set_length(field: &mut Val, value: f32) {
+    *field = in_unit_of(*field, value);
+}
+
+/// A twentieth of a unit, moving slower than half a unit per second: invisible in pixels, and
+/// about a pixel in the relative units (a percent of a 1920-pixel parent is 19 pixels), where
+/// half a pixel's tolerance would snap visibly.
+fn length_rest() -> RestThreshold<f32> {
+    RestThreshold::new(0.05, 0.5)
+}
+
+/// `UiTransform::translation`, each axis in its own unit: moves a node without relayout (a hover
+/// lift, a slide-in).
+///
+/// Like every `Val` property here, it springs the number of each field in the unit the field
+/// has (`Px`, `Percent`, `Vw`, `Vh`, `VMin` or `VMax`), as a tween between two values of one
+/// unit would: an axis at `Val::Percent(10.0)` sprung to `50.0` slides to 50 %. Units are not
+/// converted into one another (that needs the layout), so the target is in the field's unit; an
+/// `Auto` field is read as 0 and written in pixels.
 #[derive(TypePath, Debug, Clone, Copy)]
 pub struct UiTransformTranslation;
 
@@ -36,17 +66,21 @@ impl LinearProperty for UiTransformTranslation {
     type Value = Vec2;
 
     fn default_rest() -> RestThreshold<f32> {
-        pixel_rest()
+        length_rest()
     }
 
     #[inline]
     fn get(transform: &UiTransform) -> Vec2 {
-        Vec2::new(px(transform.translation.x), px(transform.translation.y))
+        Vec2::new(
+            number(transform.translation.x),
+            number(transform.translation.y),
+        )
     }
 
     #[inline]
     fn set(transform: &mut UiTransform, value: Vec2) {
-        transform.translation = Val2::new(Val::Px(value.x), Val::Px(value.y));
+        set_length(&mut transform.translation.x, value.x);
+        set_length(&mut transform.translation.y, value.y);
     }
 }
 
@@ -112,7 +146,7 @@ impl SpringProperty for UiTransformRotation {
 }
 
 macro_rules! node_property {
-    ($(#[$doc:meta])* $name:ident, $alias:ident, $value:ty, |$n:ident| $get:expr, |$m:ident, $v:ident| $set:expr) => {
+    ($(#[$doc:meta])* $name:ident, $alias:ident, $value:ty, never_through_zero: $never:expr, |$n:ident| $get:expr, |$m:ident, $v:ident| $set:expr) => {
         $(#[$doc])*
         #[derive(TypePath, Debug, Clone, Copy)]
         pub struct $name;
@@ -120,9 +154,10 @@ macro_rules! node_property {
         impl LinearProperty for $name {
             type Component = Node;
             type Value = $value;
+            const NEVER_THROUGH_ZERO: bool = $never;
 
             fn default_rest() -> RestThreshold<f32> {
-                pixel_rest()
+                length_rest()
             }
 
             #[inline]
@@ -142,40 +177,50 @@ macro_rules! node_property {
 }
 
 node_property!(
-    /// `Node::width` and `Node::height` in pixels (a panel that grows).
-    NodeSize, NodeSizeSpring, Vec2,
-    |node| Vec2::new(px(node.width), px(node.height)),
-    |node, size| { node.width = Val::Px(size.x); node.height = Val::Px(size.y) }
+    /// `Node::width` and `Node::height`, each in its own unit as for [`UiTransformTranslation`]
+    /// (a panel that grows). Sizes do not
+    /// pass through zero: a panel that collapses with a bounce stops at 0 instead of going
+    /// negative.
+    NodeSize, NodeSizeSpring, Vec2, never_through_zero: true,
+    |node| Vec2::new(number(node.width), number(node.height)),
+    |node, size| { set_length(&mut node.width, size.x); set_length(&mut node.height, size.y) }
 );
 node_property!(
-    /// `Node::left` and `Node::top` in pixels (an absolutely positioned node that moves).
-    NodePosition, NodePositionSpring, Vec2,
-    |node| Vec2::new(px(node.left), px(node.top)),
-    |node, position| { node.left = Val::Px(position.x); node.top = Val::Px(position.y) }
+    /// `Node::left` and `Node::top`, each in its own unit as for [`UiTransformTranslation`] (an
+    /// absolutely positioned node that moves).
+    NodePosition, NodePositionSpring, Vec2, never_through_zero: false,
+    |node| Vec2::new(number(node.left), number(node.top)),
+    |node, position| { set_length(&mut node.left, position.x); set_length(&mut node.top, position.y) }
 );
 node_property!(
-    /// `Node::width` in pixels.
-    NodeWidth, NodeWidthSpring, f32, |node| px(node.width), |node, value| node.width = Val::Px(value)
+    /// `Node::width` in its unit; it does not pass through zero, as [`NodeSize`].
+    NodeWidth, NodeWidthSpring, f32, never_through_zero: true,
+    |node| number(node.width), |node, value| set_length(&mut node.width, value)
 );
 node_property!(
-    /// `Node::height` in pixels.
-    NodeHeight, NodeHeightSpring, f32, |node| px(node.height), |node, value| node.height = Val::Px(value)
+    /// `Node::height` in its unit; it does not pass through zero, as [`NodeSize`].
+    NodeHeight, NodeHeightSpring, f32, never_through_zero: true,
+    |node| number(node.height), |node, value| set_length(&mut node.height, value)
 );
 node_property!(
-    /// `Node::left` in pixels.
-    NodeLeft, NodeLeftSpring, f32, |node| px(node.left), |node, value| node.left = Val::Px(value)
+    /// `Node::left` in its unit.
+    NodeLeft, NodeLeftSpring, f32, never_through_zero: false,
+    |node| number(node.left), |node, value| set_length(&mut node.left, value)
 );
 node_property!(
-    /// `Node::top` in pixels.
-    NodeTop, NodeTopSpring, f32, |node| px(node.top), |node, value| node.top = Val::Px(value)
+    /// `Node::top` in its unit.
+    NodeTop, NodeTopSpring, f32, never_through_zero: false,
+    |node| number(node.top), |node, value| set_length(&mut node.top, value)
 );
 node_property!(
-    /// `Node::right` in pixels.
-    NodeRight, NodeRightSpring, f32, |node| px(node.right), |node, value| node.right = Val::Px(value)
+    /// `Node::right` in its unit.
+    NodeRight, NodeRightSpring, f32, never_through_zero: false,
+    |node| number(node.right), |node, value| set_length(&mut node.right, value)
 );
 node_property!(
-    /// `Node::bottom` in pixels.
-    NodeBottom, NodeBottomSpring, f32, |node| px(node.bottom), |node, value| node.bottom = Val::Px(value)
+    /// `Node::bottom` in its unit.
+    NodeBottom, NodeBottomSpring, f32, never_through_zero: false,
+    |node| number(node.bottom), |node, value| set_length(&mut node.bottom, value)
 );
 
 /// A spring on [`UiTransformTranslation`].
