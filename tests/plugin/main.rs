@@ -16,4 +16,5 @@ mod motion;
 mod properties;
 mod scheduling;
 mod sleeping;
+mod spin;
 mod ui;

@@ -46,6 +46,7 @@ mod event;
 mod follow;
 mod plugin;
 mod property;
+mod spin;
 mod systems;
 #[cfg(feature = "ui")]
 mod ui;
@@ -72,6 +73,7 @@ pub use property::{
     LinearProperty, Reflectable, Rotation, Scale, SignedScale, SpringProperty, SpringVector,
     Translation, rotation_vector,
 };
+pub use spin::{Spin, SpinAngle, SpinSpring};
 pub use sprung;
 #[cfg(feature = "ui")]
 pub use ui::{
@@ -94,8 +96,9 @@ pub mod prelude {
     };
     pub use crate::{
         LinearProperty, PropertySpring, Rotation, RotationSpring, Scale, ScaleSpring, SignedScale,
-        SignedScaleSpring, SpringAsleep, SpringClock, SpringPlugin, SpringProperty,
-        SpringPropertyPlugin, SpringSettled, SpringSystems, Translation, TranslationSpring,
+        SignedScaleSpring, Spin, SpinSpring, SpringAsleep, SpringClock, SpringPlugin,
+        SpringProperty, SpringPropertyPlugin, SpringSettled, SpringSystems, Translation,
+        TranslationSpring,
     };
     pub use crate::{SpringFollow, TargetMotion};
     pub use sprung::{RestThreshold, Spring};

@@ -13,6 +13,7 @@ use crate::follow::{
     SpringFollow, TargetMotion, aim_followers, follow_targets, sample_fixed_targets,
 };
 use crate::property::{Rotation, Scale, SignedScale, SpringProperty, Translation};
+use crate::spin::{Spin, SpinAngle, apply_spin};
 use crate::systems::{step_springs, wake_springs};
 
 /// All of the plugin's systems. In `PostUpdate` (the default schedule) the set runs in
@@ -153,7 +154,26 @@ impl Plugin for SpringPlugin {
             SpringPropertyPlugin::<Rotation>::default(),
             SpringPropertyPlugin::<Scale>::default(),
             SpringPropertyPlugin::<SignedScale>::default(),
+            SpringPropertyPlugin::<SpinAngle>::default(),
         ));
+        // A spin sets the rotation right after its spring stepped, inside the spin's property
+        // set: ordered with every other property that writes a `Transform`.
+        let spin_set = PropertySystems::<SpinAngle>::default;
+        app.register_type::<Spin>().add_systems(
+            self.schedule,
+            apply_spin
+                .after(step_springs::<SpinAngle>)
+                .in_set(spin_set())
+                .run_if(any_with_component::<Spin>),
+        );
+        #[cfg(feature = "ui")]
+        app.add_systems(
+            self.schedule,
+            crate::spin::apply_ui_spin
+                .after(step_springs::<SpinAngle>)
+                .in_set(spin_set())
+                .run_if(any_with_component::<Spin>),
+        );
         #[cfg(feature = "sprite")]
         app.add_plugins(SpringPropertyPlugin::<
             crate::color::Oklab<crate::color::SpriteTint>,

@@ -1,0 +1,141 @@
+//! Turns by an angle, for motion that orientations cannot express: whole turns.
+
+use bevy::prelude::*;
+use sprung::RestThreshold;
+
+use crate::component::PropertySpring;
+use crate::property::LinearProperty;
+
+/// An angle about a fixed axis that sets the entity's rotation: `Transform::rotation` becomes
+/// the rotation by [`angle`](Self::angle) about [`axis`](Self::axis) (and, with feature `ui`,
+/// `UiTransform::rotation` becomes the angle in the node's plane, clockwise on screen as
+/// `UiTransform` turns) whenever the `Spin` changes.
+///
+/// A [`RotationSpring`](crate::RotationSpring) moves between orientations the short way, so a
+/// whole turn is no motion to it: 0 and 2π are the same orientation. A [`SpinSpring`] springs
+/// the angle itself, so a coin flip of 3 turns or a settings cog that turns once on hover (what
+/// `bevy_tweening`'s `TransformRotateZLens` tweens) springs through every turn. The angle is not
+/// wrapped; after many turns, subtract the same multiple of τ from it and from the spring's
+/// target where convenient (`f32` keeps a thousandth of a radian up to ~8 000 rad).
+///
+/// The `Spin` owns the rotation: do not also put a `RotationSpring` on the entity. It needs no
+/// component of its own kind: it turns the `Transform` (or `UiTransform`) the entity has.
+///
+/// # Example
+/// ```
+/// use core::f32::consts::TAU;
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn(mut commands: Commands) {
+///     // A coin that flips three times about its x axis, with a little bounce at the end.
+///     commands.spawn((
+///         Transform::default(),
+///         Spin::new(Dir3::X, 0.0),
+///         SpinSpring::new(Spring::bouncy(), 3.0 * TAU),
+///     ));
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Component, Debug, PartialEq, Default)]
+pub struct Spin {
+    /// The axis of the turn (for 2D and UI, [`Dir3::Z`]).
+    pub axis: Dir3,
+    /// The angle in radians, counter-clockwise about `axis`, unwrapped.
+    pub angle: f32,
+}
+
+impl Default for Spin {
+    /// No turn, about [`Dir3::Z`].
+    fn default() -> Self {
+        Self::z(0.0)
+    }
+}
+
+impl Spin {
+    /// A turn of `angle` radians about `axis`.
+    #[inline]
+    #[must_use]
+    pub const fn new(axis: Dir3, angle: f32) -> Self {
+        Self { axis, angle }
+    }
+
+    /// A turn of `angle` radians about the z axis: the turn of a 2D sprite or a UI node.
+    #[inline]
+    #[must_use]
+    pub const fn z(angle: f32) -> Self {
+        Self::new(Dir3::Z, angle)
+    }
+
+    /// The rotation this spin sets. A non-finite angle gives the identity (a [`SpinSpring`]
+    /// never writes one).
+    #[inline]
+    #[must_use]
+    pub fn rotation(&self) -> Quat {
+        if self.angle.is_finite() {
+            Quat::from_axis_angle(self.axis.as_vec3(), self.angle)
+        } else {
+            Quat::IDENTITY
+        }
+    }
+}
+
+/// [`Spin::angle`], in radians.
+#[derive(Reflect, Debug, Clone, Copy)]
+pub struct SpinAngle;
+
+impl LinearProperty for SpinAngle {
+    type Component = Spin;
+    type Value = f32;
+
+    /// A thousandth of a radian (0.06°) and a hundredth of a radian per second, as
+    /// [`Rotation`](crate::Rotation).
+    #[inline]
+    fn default_rest() -> RestThreshold<f32> {
+        RestThreshold::new(1e-3, 1e-2)
+    }
+
+    #[inline]
+    fn get(spin: &Spin) -> f32 {
+        spin.angle
+    }
+
+    #[inline]
+    fn set(spin: &mut Spin, angle: f32) {
+        spin.angle = angle;
+    }
+}
+
+/// A spring on [`Spin::angle`]: whole turns, see [`Spin`].
+pub type SpinSpring = PropertySpring<SpinAngle>;
+
+/// Sets `Transform::rotation` from each [`Spin`] that changed, writing only a rotation that
+/// differs.
+pub(crate) fn apply_spin(mut spins: Query<(&Spin, &mut Transform), Changed<Spin>>) {
+    for (spin, mut transform) in &mut spins {
+        let rotation = spin.rotation();
+        if transform.rotation != rotation {
+            transform.rotation = rotation;
+        }
+    }
+}
+
+/// Sets `UiTransform::rotation` from each [`Spin`] that changed (the angle in the node's plane:
+/// clockwise on screen, as `UiTransform`'s y axis points down), writing only a rotation that
+/// differs.
+#[cfg(feature = "ui")]
+pub(crate) fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
+    for (spin, mut transform) in &mut spins {
+        let rotation = if spin.angle.is_finite() {
+            Rot2::radians(spin.angle)
+        } else {
+            Rot2::IDENTITY
+        };
+        if transform.rotation != rotation {
+            transform.rotation = rotation;
+        }
+    }
+}
