@@ -1,7 +1,8 @@
 //! A menu that springs instead of tweening: the side panel slides and fades in and out, its
-//! buttons lift and glow on hover and squash on press, and a badge pops. Every animation is a
-//! spring component on the node; retargeting mid-animation (hover, then leave at once) bends
-//! the motion smoothly instead of restarting a tween.
+//! buttons lift and glow on hover and squash on press, and a badge pops in with a whole turn (a
+//! `Spin`: a rotation spring takes the short way, and a whole turn is no way at all). Every
+//! animation is a spring component on the node; retargeting mid-animation (hover, then leave at
+//! once) bends the motion smoothly instead of restarting a tween.
 //!
 //! Click "Menu" (or press M) to open and close the panel. Without mouse input the example plays
 //! a short scripted tour, so it shows the same motion in CI screenshots.
@@ -181,6 +182,9 @@ fn setup(mut commands: Commands) {
             // Pops from nothing; `UiScaleSpring` never passes through zero, so closing lands
             // on 0 instead of flipping.
             UiScaleSpring::new(Spring::bouncy(), Vec2::ZERO),
+            // Turns once as it pops in, and back as it goes.
+            Spin::z(0.0),
+            SpinSpring::new(Spring::smooth(), 0.0),
             children![(Text::new("3"), TextFont::from_font_size(14.0))],
         ));
     commands.spawn((
@@ -276,20 +280,22 @@ fn toggle(
 fn animate_menu(
     menu: Res<Menu>,
     mut panel: Single<(&mut UiTranslationSpring, &mut BackgroundColorSpring), With<Panel>>,
-    mut badge: Single<&mut UiScaleSpring, With<Badge>>,
+    mut badge: Single<(&mut UiScaleSpring, &mut SpinSpring), With<Badge>>,
 ) {
     if !menu.is_changed() {
         return;
     }
     let (slide, fade) = &mut *panel;
-    let (x, alpha, badge_scale) = if menu.open {
-        (0.0, 0.92, 1.0)
+    let (x, alpha, badge_scale, badge_turn) = if menu.open {
+        (0.0, 0.92, 1.0, core::f32::consts::TAU)
     } else {
-        (-PANEL_WIDTH, 0.0, 0.0)
+        (-PANEL_WIDTH, 0.0, 0.0, 0.0)
     };
     let _ = slide.set_target(Vec2::new(x, 0.0));
     let _ = fade.set_target(Color::srgba(0.1, 0.11, 0.15, alpha));
-    let _ = badge.set_target(Vec2::splat(badge_scale));
+    let (pop, turn) = &mut *badge;
+    let _ = pop.set_target(Vec2::splat(badge_scale));
+    let _ = turn.set_target(badge_turn);
 }
 
 /// Hover lifts and lights a button; press squashes and darkens it.
