@@ -15,7 +15,8 @@
 //! springs, `Update` for the others), so the fixed cost of a frame does not dilute the ratios;
 //! the `Time` delta stays at the last frame's `1/60 s`. Group `frame/100000` runs whole frames
 //! (`app.update()`) with `TransformPlugin`, to show what propagation adds. Group `empty` runs
-//! whole frames of an app with no springs, with and without [`SpringPlugin`].
+//! whole frames of an app with `TransformPlugin` and no springs, with and without
+//! [`SpringPlugin`].
 //!
 //! Every app is `MinimalPlugins` with `TimeUpdateStrategy::ManualDuration(1/60 s)`; the schedule
 //! groups leave out `TransformPlugin` (propagation would add the same cost to every method).
@@ -354,7 +355,10 @@ fn frames(c: &mut Criterion) {
 fn empty(c: &mut Criterion) {
     let mut group = c.benchmark_group("empty");
     for (name, plugin) in [("no_plugin", false), ("spring_plugin", true)] {
+        // With `TransformPlugin` in both, as in any app with something to spring: `PostUpdate`
+        // then exists without the plugin too, and the difference is the plugin's own cost.
         let mut app = minimal_app();
+        app.add_plugins(TransformPlugin);
         if plugin {
             app.add_plugins(SpringPlugin::default());
         }
