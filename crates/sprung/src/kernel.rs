@@ -217,8 +217,15 @@ fn band(b: f64, w2: f64, w: f64, t: f64, z: f64, tolerance: f64) -> Coefficients
     let c = one + c_minus_1;
     let s = one + s_minus_1;
     let decay = Decay::new(bt);
-    let f1 = decay.apply(t * s);
-    let w2f1 = decay.apply_scaled(w2, t * s);
+    let ts = t * s;
+    let (f1, w2f1) = if ts.is_finite() {
+        (decay.apply(ts), decay.apply_scaled(w2, ts))
+    } else {
+        // `t` within S(z) − 1 of f64::MAX: `t·S` overflows where `e^{−bt}·t·S` (at most `t`)
+        // does not, so `t` is scaled in with the decay. (`ω²·t` is small here: the band needs
+        // `ω ≈ b ≲ 1/t`.)
+        (decay.apply_scaled(t, s), decay.apply_scaled(w2 * t, s))
+    };
     let f0 = decay.apply(c + bt * s);
     let g = decay.apply(c - bt * s);
     // Roots −b ± √z/t: |root|·t ≤ max(b, ω)·t + √|z|.
@@ -320,6 +327,14 @@ fn finish(
         (w2 * g0, g0)
     } else {
         far()
+    };
+    // g0 ≤ t²/2 outgrows f64 only for ω ≈ 0 and steps beyond ~1e154 s. It saturates at the
+    // largest finite value, as the phase does, and ω²·g0 is re-formed from it: the product above
+    // was 0·∞ = NaN for ω = 0.
+    let (w2g0, g0) = if g0.is_finite() {
+        (w2g0, g0)
+    } else {
+        (w2 * f64::MAX, f64::MAX)
     };
     Coefficients {
         f0,

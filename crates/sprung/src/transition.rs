@@ -176,7 +176,9 @@ impl<T: Scalar> Transition<T> {
     }
 
     /// `g0 = ∫₀ᵈᵗ f1(τ) dτ`: how far a unit constant acceleration moves the value over the step
-    /// (`dt²/2` for a free spring).
+    /// (`dt²/2` for a free spring). Where the integral exceeds the largest finite `T` (a step
+    /// beyond ~1.3e154 s of an almost free spring in `f64`) it saturates there; it is never
+    /// infinite.
     #[inline]
     #[must_use]
     pub fn acceleration_gain(&self) -> T {
@@ -275,7 +277,14 @@ impl<T: Scalar> Transition<T> {
         // to the target's.
         let offset = (state.position - target) + target_velocity * self.dt;
         let relative_velocity = state.velocity - target_velocity;
+        // rate·g0 = dt − f1 − ω²·∫g0 ≤ dt: bounding it by dt changes nothing but a rounding
+        // that would overflow at dt ≈ T::MAX (and then give 0·∞ = NaN for a resting target).
         let forcing_position = self.rate * self.g0;
+        let forcing_position = if forcing_position > self.dt {
+            self.dt
+        } else {
+            forcing_position
+        };
         let forcing_velocity = self.rate * self.f1;
         SpringState {
             position: state.position

@@ -377,6 +377,72 @@ proptest! {
     }
 }
 
+/// Any value of the type's range: zero (if allowed), the extremes (the largest finite value, the
+/// smallest normal and subnormals) or a log-uniform value over every exponent.
+fn anywhere_in_f64(zero: bool) -> impl Strategy<Value = f64> {
+    prop_oneof![
+        u32::from(zero) => Just(0.0),
+        1 => Just(f64::MAX),
+        1 => (0.5..1.0).prop_map(|x: f64| x * f64::MAX),
+        1 => Just(f64::MIN_POSITIVE),
+        1 => (1e-10..1.0).prop_map(|x: f64| x * f64::MIN_POSITIVE),
+        12 => log_uniform(-307.0, 308.0),
+    ]
+}
+
+/// Beyond DESIGN.md's range, to the ends of `f64`: a spring is refused (a typed error, when
+/// `k/m` or `c/m` overflows) or its transition and steps are finite. Accelerations and target
+/// velocities are 0 here, since a real one over a step of 1e300 s legitimately overflows the
+/// state. (A free spring's `g0 = dt²/2` once overflowed to ∞ and gave `0·∞ = NaN` in `D`; a step
+/// of `f64::MAX` overflowed `t·S(z)` in the band form.)
+fn check_finite_anywhere<T: Scalar>(m: f64, k: f64, c: f64, dt: f64) -> Result<(), TestCaseError> {
+    let Ok(spring) = Spring::new(T::from_f64(m), T::from_f64(k), T::from_f64(c)) else {
+        return Ok(());
+    };
+    let transition = spring.transition(T::from_f64(dt));
+    let entries = transition
+        .matrix()
+        .into_iter()
+        .chain(transition.increment_matrix())
+        .flatten()
+        .chain([transition.acceleration_gain()]);
+    for entry in entries {
+        prop_assert!(
+            entry.is_finite(),
+            "({m:e}, {k:e}, {c:e}, {dt:e}): {transition:?}"
+        );
+    }
+    let (zero, one) = (T::from_f64(0.0), T::from_f64(1.0));
+    let state = SpringState::new(one, zero - one);
+    for stepped in [
+        transition.step(state, zero),
+        transition.step_with_acceleration(state, zero, zero),
+        transition.step_toward_moving(state, zero, zero),
+    ] {
+        prop_assert!(
+            stepped.position.is_finite() && stepped.velocity.is_finite(),
+            "({m:e}, {k:e}, {c:e}, {dt:e}): {stepped:?}"
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(config(20_000))]
+
+    /// Every exponent of `f64`, and its extremes, for the spring and the step.
+    #[test]
+    fn finite_to_the_ends_of_the_type(
+        m in anywhere_in_f64(false),
+        k in anywhere_in_f64(true),
+        c in anywhere_in_f64(true),
+        dt in anywhere_in_f64(true),
+    ) {
+        check_finite_anywhere::<f64>(m, k, c, dt)?;
+        check_finite_anywhere::<f32>(m, k, c, dt)?;
+    }
+}
+
 /// Drift of one minute at 240 fps in `f32` against an `f64` run of the same steps, for the
 /// increment form and for the plain matrix: `(increment error, plain error)`.
 fn drift_over_a_minute(omega: f32) -> (f64, f64) {
