@@ -325,6 +325,44 @@ proptest! {
     }
 }
 
+/// The step inputs of a finiteness check, in `f64`: state, target, acceleration and target
+/// velocity.
+type StepInputs = ((f64, f64), f64, f64, f64);
+
+/// Every entry of `transition`, `D` and `g0` finite, and each step form from `inputs` finite.
+fn check_transition_finite<T: Scalar>(
+    case: (f64, f64, f64, f64),
+    transition: &Transition<T>,
+    ((position, velocity), target, acceleration, target_velocity): StepInputs,
+) -> Result<(), TestCaseError> {
+    let entries = transition
+        .matrix()
+        .into_iter()
+        .chain(transition.increment_matrix())
+        .flatten()
+        .chain([transition.acceleration_gain()]);
+    for entry in entries {
+        prop_assert!(entry.is_finite(), "{case:?}: {transition:?}");
+    }
+    let state = SpringState::new(T::from_f64(position), T::from_f64(velocity));
+    let (target, acceleration, target_velocity) = (
+        T::from_f64(target),
+        T::from_f64(acceleration),
+        T::from_f64(target_velocity),
+    );
+    for stepped in [
+        transition.step(state, target),
+        transition.step_with_acceleration(state, target, acceleration),
+        transition.step_toward_moving(state, target, target_velocity),
+    ] {
+        prop_assert!(
+            stepped.position.is_finite() && stepped.velocity.is_finite(),
+            "{case:?}: {stepped:?}"
+        );
+    }
+    Ok(())
+}
+
 /// Every entry, `D` and `g0` finite, and every step from a finite state finite.
 fn check_finite<T: Scalar>(m: f64, k: f64, c: f64, dt: f64) -> Result<(), TestCaseError> {
     let Ok(spring) = Spring::new(T::from_f64(m), T::from_f64(k), T::from_f64(c)) else {
@@ -336,29 +374,7 @@ fn check_finite<T: Scalar>(m: f64, k: f64, c: f64, dt: f64) -> Result<(), TestCa
         return Ok(());
     };
     let transition = spring.transition(T::from_f64(dt));
-    let entries = transition
-        .matrix()
-        .into_iter()
-        .chain(transition.increment_matrix())
-        .flatten()
-        .chain([transition.acceleration_gain()]);
-    for entry in entries {
-        prop_assert!(entry.is_finite(), "({m}, {k}, {c}, {dt}): {transition:?}");
-    }
-    let state = SpringState::new(T::from_f64(3.0), T::from_f64(-40.0));
-    let (target, acceleration, target_velocity) =
-        (T::from_f64(-7.0), T::from_f64(-9.81), T::from_f64(2.5));
-    for stepped in [
-        transition.step(state, target),
-        transition.step_with_acceleration(state, target, acceleration),
-        transition.step_toward_moving(state, target, target_velocity),
-    ] {
-        prop_assert!(
-            stepped.position.is_finite() && stepped.velocity.is_finite(),
-            "{stepped:?}"
-        );
-    }
-    Ok(())
+    check_transition_finite((m, k, c, dt), &transition, ((3.0, -40.0), -7.0, -9.81, 2.5))
 }
 
 proptest! {
@@ -400,31 +416,7 @@ fn check_finite_anywhere<T: Scalar>(m: f64, k: f64, c: f64, dt: f64) -> Result<(
         return Ok(());
     };
     let transition = spring.transition(T::from_f64(dt));
-    let entries = transition
-        .matrix()
-        .into_iter()
-        .chain(transition.increment_matrix())
-        .flatten()
-        .chain([transition.acceleration_gain()]);
-    for entry in entries {
-        prop_assert!(
-            entry.is_finite(),
-            "({m:e}, {k:e}, {c:e}, {dt:e}): {transition:?}"
-        );
-    }
-    let (zero, one) = (T::from_f64(0.0), T::from_f64(1.0));
-    let state = SpringState::new(one, zero - one);
-    for stepped in [
-        transition.step(state, zero),
-        transition.step_with_acceleration(state, zero, zero),
-        transition.step_toward_moving(state, zero, zero),
-    ] {
-        prop_assert!(
-            stepped.position.is_finite() && stepped.velocity.is_finite(),
-            "({m:e}, {k:e}, {c:e}, {dt:e}): {stepped:?}"
-        );
-    }
-    Ok(())
+    check_transition_finite((m, k, c, dt), &transition, ((1.0, -1.0), 0.0, 0.0, 0.0))
 }
 
 proptest! {
