@@ -81,6 +81,19 @@ impl Spin {
             Quat::IDENTITY
         }
     }
+
+    /// The rotation this spin sets in a plane (a UI node's `UiTransform::rotation`): the angle
+    /// alone, the axis ignored. A non-finite angle gives the identity, as for
+    /// [`rotation`](Self::rotation).
+    #[inline]
+    #[must_use]
+    pub fn plane_rotation(&self) -> Rot2 {
+        if self.angle.is_finite() {
+            Rot2::radians(self.angle)
+        } else {
+            Rot2::IDENTITY
+        }
+    }
 }
 
 /// [`Spin::angle`], in radians.
@@ -129,11 +142,7 @@ pub(crate) fn apply_spin(mut spins: Query<(&Spin, &mut Transform), Changed<Spin>
 #[cfg(feature = "ui")]
 pub(crate) fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
     for (spin, mut transform) in &mut spins {
-        let rotation = if spin.angle.is_finite() {
-            Rot2::radians(spin.angle)
-        } else {
-            Rot2::IDENTITY
-        };
+        let rotation = spin.plane_rotation();
         if transform.rotation != rotation {
             transform.rotation = rotation;
         }
