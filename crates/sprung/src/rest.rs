@@ -53,6 +53,54 @@ impl<T: Scalar> RestThreshold<T> {
         Self::new(offset, offset * rate)
     }
 
+    /// These tolerances raised to what `T` can resolve near a target of size `magnitude`.
+    ///
+    /// A position next to a target at `1e6` in `f32` moves in steps of `0.0625` (the type's
+    /// [spacing](Scalar::spacing) there), so an offset tolerance of `0.001` asks for more than
+    /// the position can show: the spring's offset keeps decaying below it (a
+    /// [`SpringState`](crate::SpringState) keeps those digits), but every frame after the
+    /// position reached the target is invisible work. Here the offset tolerance becomes at least
+    /// that spacing, and the speed tolerance grows by the same factor, so the two keep the ratio
+    /// you chose ([`for_spring`](Self::for_spring): equal energy). Both are at least the
+    /// smallest normal value of `T`, above which every damped spring decays (a tolerance of
+    /// exactly 0 would wait on subnormals that rounding holds up).
+    ///
+    /// Tolerances the type can resolve are returned unchanged; a non-finite `magnitude`
+    /// changes nothing but those floors. `bevy_sprung` applies this rule to every spring.
+    ///
+    /// # Example
+    /// ```
+    /// use sprung::RestThreshold;
+    /// let pixels = RestThreshold::<f32>::new(0.01, 0.1);
+    /// // Near 100 px the type resolves a hundredth of a pixel: nothing changes.
+    /// assert_eq!(pixels.at_magnitude(100.0), pixels);
+    /// // Near 1e6 it resolves 1/16: the tolerances grow 6.25×, together.
+    /// let far = pixels.at_magnitude(1e6);
+    /// assert_eq!(far.offset, 0.0625);
+    /// assert!((far.speed - 0.625).abs() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn at_magnitude(self, magnitude: T) -> Self {
+        let tiny = T::min_positive_value();
+        let spacing = magnitude.spacing();
+        let floor = if spacing.is_finite() && spacing > tiny {
+            spacing
+        } else {
+            tiny
+        };
+        let (offset, speed) = if self.offset >= floor {
+            (self.offset, self.speed)
+        } else if self.offset > T::zero() {
+            (floor, self.speed * (floor / self.offset))
+        } else {
+            (floor, self.speed)
+        };
+        Self {
+            offset,
+            speed: if speed >= tiny { speed } else { tiny },
+        }
+    }
+
     /// Whether an offset of length `offset` from the target at speed `speed` is at rest.
     #[inline]
     #[must_use]

@@ -38,6 +38,24 @@ pub trait Scalar:
     /// Converts to `f64` exactly (`f32 → f64` is exact).
     #[must_use]
     fn to_f64(self) -> f64;
+
+    /// The spacing of the type at `self`: the gap from `|self|` to the next larger value (one
+    /// unit in its last place), or for the largest finite value the gap below it. At zero it is
+    /// the smallest subnormal; NaN for NaN, infinite for an infinity.
+    ///
+    /// No value of the type lies strictly between `x` and `x ± x.spacing()`: it is the finest
+    /// distance from `x` that a position can express.
+    ///
+    /// # Example
+    /// ```
+    /// use sprung::Scalar;
+    /// assert_eq!(1.0_f32.spacing(), f32::EPSILON);
+    /// assert_eq!(1e6_f32.spacing(), 0.0625);
+    /// assert_eq!((-1e6_f32).spacing(), 0.0625);
+    /// assert_eq!(f64::MAX.spacing(), f64::MAX - f64::MAX.next_down());
+    /// ```
+    #[must_use]
+    fn spacing(self) -> Self;
 }
 
 impl Scalar for f32 {
@@ -56,6 +74,17 @@ impl Scalar for f32 {
     fn to_f64(self) -> f64 {
         f64::from(self)
     }
+
+    #[inline]
+    fn spacing(self) -> Self {
+        let magnitude = self.abs();
+        let above = magnitude.next_up();
+        if above.is_finite() || magnitude.is_infinite() {
+            above - magnitude
+        } else {
+            magnitude - magnitude.next_down()
+        }
+    }
 }
 
 impl Scalar for f64 {
@@ -69,5 +98,16 @@ impl Scalar for f64 {
     #[inline]
     fn to_f64(self) -> f64 {
         self
+    }
+
+    #[inline]
+    fn spacing(self) -> Self {
+        let magnitude = self.abs();
+        let above = magnitude.next_up();
+        if above.is_finite() || magnitude.is_infinite() {
+            above - magnitude
+        } else {
+            magnitude - magnitude.next_down()
+        }
     }
 }

@@ -20,7 +20,21 @@ impl<T, V> SpringValue<T> for V where
 {
 }
 
-/// Position and velocity of a sprung value.
+/// Position and velocity of a sprung value, with the digits of the position that the position
+/// itself cannot hold.
+///
+/// A spring approaching its target moves by less and less each step. Added to a position far
+/// from zero, such a move rounds away (below half a unit in the last place of the position:
+/// ~3e-5 at 1000 in `f32`), and a state that only held `position` would stop short of its
+/// target for ever, with a velocity that never decays. So every step stores the part of the
+/// new position that rounding dropped in a hidden [`remainder`](Self::remainder), and the
+/// next step starts from `position + remainder`: the offset from the target keeps every digit
+/// and decays exactly as the closed-form solution does, at any magnitude and frame rate.
+///
+/// `position` is always the nearest representable value to the exact position. To move a state
+/// elsewhere, use [`set_position`](Self::set_position) or build a new one: writing `position`
+/// directly keeps the old remainder (less than one unit in the last place of the old position or
+/// of the old offset from the target).
 ///
 /// # Example
 /// ```
@@ -35,22 +49,31 @@ impl<T, V> SpringValue<T> for V where
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "bevy_reflect", derive(bevy_reflect::Reflect))]
 pub struct SpringState<V> {
-    /// Where the value is.
+    /// Where the value is, rounded to `V`'s precision.
     pub position: V,
     /// How fast it moves, in units of `position` per second.
     pub velocity: V,
-}
-
-impl<V> SpringState<V> {
-    /// A state at `position` moving with `velocity`.
-    #[inline]
-    #[must_use]
-    pub const fn new(position: V, velocity: V) -> Self {
-        Self { position, velocity }
-    }
+    /// What the exact position adds to `position`: below one unit in its last place once the
+    /// spring is near its target.
+    remainder: V,
 }
 
 impl<V: Copy + Sub<Output = V>> SpringState<V> {
+    /// A state at `position` moving with `velocity`.
+    #[inline]
+    #[must_use]
+    #[expect(
+        clippy::eq_op,
+        reason = "x − x is the zero of any Sub type, with no zero constant to require"
+    )]
+    pub fn new(position: V, velocity: V) -> Self {
+        Self {
+            position,
+            velocity,
+            remainder: velocity - velocity,
+        }
+    }
+
     /// A state at `position` with zero velocity (`position − position`, so it works for any
     /// [`SpringValue`] without a zero constant).
     #[inline]
@@ -60,9 +83,76 @@ impl<V: Copy + Sub<Output = V>> SpringState<V> {
         reason = "x − x is the zero of any Sub type, with no zero constant to require"
     )]
     pub fn at_rest(position: V) -> Self {
+        let zero = position - position;
         Self {
             position,
-            velocity: position - position,
+            velocity: zero,
+            remainder: zero,
+        }
+    }
+
+    /// The part of the exact position below `position`'s last digit: the exact position is
+    /// `position + remainder`. Zero for a state built by [`new`](Self::new) or
+    /// [`at_rest`](Self::at_rest).
+    #[inline]
+    #[must_use]
+    pub fn remainder(&self) -> V {
+        self.remainder
+    }
+
+    /// Moves the state to `position` exactly (the remainder is cleared), keeping its velocity.
+    #[expect(
+        clippy::eq_op,
+        reason = "x − x is the zero of any Sub type, with no zero constant to require"
+    )]
+    #[inline]
+    pub fn set_position(&mut self, position: V) {
+        self.position = position;
+        self.remainder = position - position;
+    }
+}
+
+impl<V: Copy + Add<Output = V> + Sub<Output = V>> SpringState<V> {
+    /// The offset `(position + remainder) − target` of the exact position from `target`, with
+    /// the digits `position` alone would lose: what the steps advance, and what a rest test
+    /// should measure (it decays to zero instead of stopping at the rounding of `position`).
+    ///
+    /// # Example
+    /// ```
+    /// use sprung::{Spring, SpringState};
+    /// let step = Spring::<f32>::molasses().transition(1.0 / 240.0);
+    /// let mut state = SpringState::at_rest(0.0_f32);
+    /// for _ in 0..240 * 20 {
+    ///     state = step.step(state, 1000.0);
+    /// }
+    /// // The position has reached the target; the offset keeps decaying below its spacing.
+    /// assert_eq!(state.position, 1000.0);
+    /// assert!(state.offset_from(1000.0).abs() < 1e-12);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn offset_from(&self, target: V) -> V {
+        (self.position - target) + self.remainder
+    }
+
+    /// The state `increment` further on (the exact position plus `increment`), moving with
+    /// `velocity`: compensated summation.
+    ///
+    /// `position` becomes `position + (increment + remainder)` rounded, and the remainder keeps
+    /// what the rounding dropped: Dekker's Fast2Sum error term, exact whenever the position is
+    /// at least as large as the step (the case of a spring near its target, where the dropped
+    /// digits are all that is left of its motion), and otherwise within a unit in the last place
+    /// of the step, which is already the step's own precision. The position keeps the precision
+    /// of its own magnitude, whatever the target's.
+    #[inline]
+    #[must_use]
+    fn advanced(self, increment: V, velocity: V) -> Self {
+        let increment = increment + self.remainder;
+        let position = self.position + increment;
+        Self {
+            position,
+            velocity,
+            remainder: increment - (position - self.position),
         }
     }
 }
@@ -74,9 +164,13 @@ impl<V: Copy + Sub<Output = V>> SpringState<V> {
 /// forcing integral `g0 = ∫₀ᵈᵗ f1` for constant accelerations and moving targets. Compute it
 /// once per `(spring, dt)` and apply it to as many values as share them.
 ///
-/// Every step adds `D·(x − x*, v)` to the current state instead of replacing it with
-/// `M·(x − x*, v)`: `M₀₀ ≈ 1 − (ω·dt)²/2` rounds badly in `f32`, and at 240 fps the plain form
-/// drifts 60× more over a minute than the increment form.
+/// Every step works on the exact offset `y = x − x*` (the state's position plus its
+/// [remainder](SpringState::remainder), less the target) and adds `D·(y, v)` to it instead of
+/// replacing it with `M·(y, v)`: `M₀₀ ≈ 1 − (ω·dt)²/2` rounds badly in `f32`, and at 240 fps
+/// the plain form drifts far more over a minute than the increment form. Keeping the offset
+/// whole is what makes the spring arrive: an increment added to the position itself is rounded
+/// away once it falls below half a unit in the position's last place, and the spring then stops
+/// short of its target for ever.
 ///
 /// # Example
 /// ```
@@ -202,12 +296,12 @@ impl<T: Scalar> Transition<T> {
     #[inline]
     #[must_use]
     pub fn step<V: SpringValue<T>>(&self, state: SpringState<V>, target: V) -> SpringState<V> {
-        let offset = state.position - target;
+        let offset = state.offset_from(target);
         let velocity = state.velocity;
-        SpringState {
-            position: state.position + (offset * self.d00 + velocity * self.f1),
-            velocity: velocity + (velocity * self.d11 - offset * self.w2f1),
-        }
+        state.advanced(
+            offset * self.d00 + velocity * self.f1,
+            velocity + (velocity * self.d11 - offset * self.w2f1),
+        )
     }
 
     /// One step toward a constant `target` under a constant `acceleration` (gravity, wind, a
@@ -232,14 +326,12 @@ impl<T: Scalar> Transition<T> {
         target: V,
         acceleration: V,
     ) -> SpringState<V> {
-        let offset = state.position - target;
+        let offset = state.offset_from(target);
         let velocity = state.velocity;
-        SpringState {
-            position: state.position
-                + (offset * self.d00 + velocity * self.f1 + acceleration * self.g0),
-            velocity: velocity
-                + (velocity * self.d11 - offset * self.w2f1 + acceleration * self.f1),
-        }
+        state.advanced(
+            offset * self.d00 + velocity * self.f1 + acceleration * self.g0,
+            velocity + (velocity * self.d11 - offset * self.w2f1 + acceleration * self.f1),
+        )
     }
 
     /// One step toward a target that moves at constant `target_velocity` during the step and is
@@ -275,7 +367,7 @@ impl<T: Scalar> Transition<T> {
     ) -> SpringState<V> {
         // Offset from the target's position at the start of the step, and velocity relative
         // to the target's.
-        let offset = (state.position - target) + target_velocity * self.dt;
+        let offset = state.offset_from(target) + target_velocity * self.dt;
         let relative_velocity = state.velocity - target_velocity;
         // rate·g0 = dt − f1 − ω²·∫g0 ≤ dt: bounding it by dt changes nothing but a rounding
         // that would overflow at dt ≈ T::MAX (and then give 0·∞ = NaN for a resting target).
@@ -286,15 +378,15 @@ impl<T: Scalar> Transition<T> {
             forcing_position
         };
         let forcing_velocity = self.rate * self.f1;
-        SpringState {
-            position: state.position
-                + (target_velocity * self.dt + offset * self.d00 + relative_velocity * self.f1
-                    - target_velocity * forcing_position),
-            velocity: state.velocity
+        // The spring moves with the target (`r·dt`) plus its response relative to it.
+        state.advanced(
+            target_velocity * self.dt + offset * self.d00 + relative_velocity * self.f1
+                - target_velocity * forcing_position,
+            state.velocity
                 + (relative_velocity * self.d11
                     - offset * self.w2f1
                     - target_velocity * forcing_velocity),
-        }
+        )
     }
 
     /// Steps every state toward the target at the same index (one transition shared by all).
