@@ -34,6 +34,9 @@
 //! - `std` (default): the standard library's float functions.
 //! - `libm`: [`libm`](https://docs.rs/libm) for the float functions, for `no_std` targets
 //!   (build with `default-features = false, features = ["libm"]`).
+//! - `serde`: `Serialize`/`Deserialize` for [`Spring`] (read from any parametrisation and
+//!   validated: a file cannot make an invalid spring), [`RestThreshold`] and [`Regime`].
+//! - `bevy_reflect`: `Reflect` for the value types, for Bevy components and inspectors.
 #![no_std]
 
 #[cfg(feature = "std")]
@@ -48,6 +51,8 @@ mod kernel;
 mod math;
 mod rest;
 mod scalar;
+#[cfg(feature = "serde")]
+mod serde_impls;
 mod spring;
 mod transition;
 

@@ -109,10 +109,36 @@ impl<T: Scalar> RestThreshold<T> {
     }
 }
 
+/// The default offset tolerance, in units.
+const DEFAULT_OFFSET: f64 = 1e-3;
+/// The default speed tolerance, in units per second.
+const DEFAULT_SPEED: f64 = 1e-2;
+
+impl RestThreshold<f32> {
+    /// 0.001 units and 0.01 units per second: for values of order 1 (metres, radians,
+    /// normalised colours). Use [`RestThreshold::new`] for pixels.
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "the constants are exact enough in f32"
+    )]
+    pub const DEFAULT: Self = Self {
+        offset: DEFAULT_OFFSET as f32,
+        speed: DEFAULT_SPEED as f32,
+    };
+}
+
+impl RestThreshold<f64> {
+    /// 0.001 units and 0.01 units per second, as [`RestThreshold::<f32>::DEFAULT`].
+    pub const DEFAULT: Self = Self {
+        offset: DEFAULT_OFFSET,
+        speed: DEFAULT_SPEED,
+    };
+}
+
 impl<T: Scalar> Default for RestThreshold<T> {
-    /// 0.001 units and 0.01 units per second: for values of order 1 (metres, normalised
-    /// colours). Use [`RestThreshold::new`] for pixels.
+    /// [`RestThreshold::DEFAULT`]: 0.001 units and 0.01 units per second, for values of order
+    /// 1 (metres, radians, normalised colours). Use [`RestThreshold::new`] for pixels.
     fn default() -> Self {
-        Self::new(T::from_f64(1e-3), T::from_f64(1e-2))
+        Self::new(T::from_f64(DEFAULT_OFFSET), T::from_f64(DEFAULT_SPEED))
     }
 }

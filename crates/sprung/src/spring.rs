@@ -15,6 +15,11 @@ const CRITICAL_HALFWAY: f64 = 1.678_346_990_016_660_8;
 /// regimes continuously. It is descriptive, for users and for choosing presets.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "bevy_reflect", derive(bevy_reflect::Reflect))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "snake_case")
+)]
 pub enum Regime {
     /// `0 < ζ < 1`: oscillates with a decaying envelope.
     Underdamped,
