@@ -238,9 +238,9 @@ fn smooth_nudge(
     transform.rotation.smooth_nudge(&look, 6.0, dt);
     // Keep the springs where the camera is, so switching back continues smoothly.
     let (here, facing) = (transform.translation, transform.rotation);
-    let _ = position.set_target(here);
-    let _ = position.set_target_velocity(Vec3::ZERO);
-    let _ = rotation.set_target(facing);
+    position.set_target(here);
+    position.set_target_velocity(Vec3::ZERO);
+    rotation.set_target(facing);
 }
 
 fn hud(

@@ -234,7 +234,7 @@ fn restart_cycle(
     cycle.0 = 0.0;
     for (mut row, mut transform, mut spring) in &mut rows {
         transform.translation = spring.target() + Vec3::X * START_OFFSET * UNIT;
-        let _ = spring.set_velocity(Vec3::X * START_SPEED * UNIT);
+        spring.set_velocity(Vec3::X * START_SPEED * UNIT);
         row.trace.clear();
     }
 }

@@ -115,7 +115,7 @@ fn steer(
     });
     if ship.target().truncate() != target {
         // Retargeting keeps the velocity: the ship bends toward the new point.
-        let _ = ship.set_target(target.extend(0.0));
+        ship.set_target(target.extend(0.0));
     }
 }
 
@@ -126,7 +126,7 @@ fn face_travel(mut ship: Single<(&TranslationSpring, &mut RotationSpring), With<
     if velocity.length() > 40.0 {
         let heading = Quat::from_rotation_z(velocity.to_angle());
         if rotation.target() != heading {
-            let _ = rotation.set_target(heading);
+            rotation.set_target(heading);
         }
     }
 }

@@ -134,7 +134,7 @@ fn controls(
         for mut spring in &mut springs {
             spring.set_rest(rest(sleeping.0));
             // Wake everything so the new setting applies at once.
-            let _ = spring.add_impulse(Vec3::Y * 1e-3);
+            spring.add_impulse(Vec3::Y * 1e-3);
         }
     }
     if keys.just_pressed(KeyCode::Equal) || keys.just_pressed(KeyCode::NumpadAdd) {
@@ -156,7 +156,7 @@ fn wave(
     let (from, to) = (state.next, state.next + band);
     for (home, mut spring) in &mut sprites {
         if (from..to).contains(&home.0) {
-            let _ = spring.add_impulse(Vec3::new(0.0, 260.0, 0.0));
+            spring.add_impulse(Vec3::new(0.0, 260.0, 0.0));
         }
     }
     state.next = if to >= count.0 { 0 } else { to };

@@ -108,7 +108,7 @@ fn button(label: &str, node: Node) -> impl Bundle {
         BackgroundColorSpring::new(Spring::snappy(), IDLE),
         BorderColorSpring::new(Spring::snappy(), Color::srgb(0.3, 0.33, 0.4)),
         UiScaleSpring::new(Spring::bouncy(), Vec2::ONE),
-        UiTranslationSpring::new(Spring::snappy(), Vec2::ZERO),
+        UiTranslationSpring::new(Spring::snappy(), Val2::ZERO),
         children![(
             Text::new(label),
             TextFont::from_font_size(20.0),
@@ -136,7 +136,7 @@ fn setup(mut commands: Commands) {
         },
         BackgroundColor(Color::srgba(0.1, 0.11, 0.15, 0.0)),
         UiTransform::from_translation(Val2::px(-PANEL_WIDTH, 0.0)),
-        UiTranslationSpring::new(Spring::smooth(), Vec2::new(-PANEL_WIDTH, 0.0)),
+        UiTranslationSpring::new(Spring::smooth(), Val2::px(-PANEL_WIDTH, 0.0)),
         BackgroundColorSpring::new(Spring::smooth(), Color::srgba(0.1, 0.11, 0.15, 0.0)),
         children![
             button("New game", panel_button()),
@@ -291,11 +291,11 @@ fn animate_menu(
     } else {
         (-PANEL_WIDTH, 0.0, 0.0, 0.0)
     };
-    let _ = slide.set_target(Vec2::new(x, 0.0));
-    let _ = fade.set_target(Color::srgba(0.1, 0.11, 0.15, alpha));
+    slide.set_target(Val2::px(x, 0.0));
+    fade.set_target(Color::srgba(0.1, 0.11, 0.15, alpha));
     let (pop, turn) = &mut *badge;
-    let _ = pop.set_target(Vec2::splat(badge_scale));
-    let _ = turn.set_target(badge_turn);
+    pop.set_target(Vec2::splat(badge_scale));
+    turn.set_target(badge_turn);
 }
 
 /// Hover lifts and lights a button; press squashes and darkens it.
@@ -337,13 +337,13 @@ fn animate_buttons(
                 Color::srgb(0.85, 0.9, 1.0),
             ),
         };
-        let _ = background.set_target(color);
-        let _ = border.set_target(edge);
-        let _ = scale.set_target(Vec2::splat(size));
-        let _ = lift.set_target(Vec2::new(0.0, rise));
+        background.set_target(color);
+        border.set_target(edge);
+        scale.set_target(Vec2::splat(size));
+        lift.set_target(Val2::px(0.0, rise));
         for child in children {
             if let Ok(mut label) = labels.get_mut(*child) {
-                let _ = label.set_target(text);
+                label.set_target(text);
             }
         }
     }

@@ -1,11 +1,17 @@
-//! NaN and infinity are refused and never reach a component.
+//! NaN and infinity are refused and never reach a component; faults never freeze a spring.
 
 use bevy::prelude::*;
 use bevy::reflect::PartialReflect;
-use bevy_sprung::SpringInputError;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringInputError;
 
-use crate::harness::{app, run, spawn_translation, translation, translation_spring};
+use crate::harness::{app, asleep, run, spawn_translation, translation, translation_spring};
+
+const BAD: [Vec3; 3] = [
+    Vec3::NAN,
+    Vec3::new(f32::INFINITY, 0.0, 0.0),
+    Vec3::new(0.0, f32::NEG_INFINITY, 1.0),
+];
 
 #[test]
 fn non_finite_targets_and_impulses_are_refused_and_the_state_kept() {
@@ -17,39 +23,79 @@ fn non_finite_targets_and_impulses_are_refused_and_the_state_kept() {
         .world_mut()
         .get_mut::<TranslationSpring>(entity)
         .unwrap();
-    for bad in [
-        Vec3::NAN,
-        Vec3::new(f32::INFINITY, 0.0, 0.0),
-        Vec3::new(0.0, f32::NEG_INFINITY, 1.0),
-    ] {
+    for bad in BAD {
         assert_eq!(
-            spring.set_target(bad),
+            spring.try_set_target(bad),
             Err(SpringInputError::NonFiniteTarget)
         );
         assert_eq!(
-            spring.add_impulse(bad),
+            spring.try_add_impulse(bad),
             Err(SpringInputError::NonFiniteVelocity)
         );
         assert_eq!(
-            spring.set_velocity(bad),
+            spring.try_set_velocity(bad),
             Err(SpringInputError::NonFiniteVelocity)
         );
         assert_eq!(
-            spring.set_target_velocity(bad),
+            spring.try_set_target_velocity(bad),
             Err(SpringInputError::NonFiniteVelocity)
         );
+        // The infallible forms refuse the same values, and so does the retarget-if-changed.
+        spring.set_target(bad);
+        spring.add_impulse(bad);
+        spring.set_velocity(bad);
+        spring.set_target_velocity(bad);
+        assert!(!spring.set_target_if_neq(bad));
     }
     // A finite impulse whose sum overflows is refused too.
-    assert_eq!(spring.add_impulse(Vec3::X * f32::MAX), Ok(()));
+    assert_eq!(spring.try_add_impulse(Vec3::X * f32::MAX), Ok(()));
     assert_eq!(
-        spring.add_impulse(Vec3::X * f32::MAX),
+        spring.try_add_impulse(Vec3::X * f32::MAX),
         Err(SpringInputError::NonFiniteVelocity)
     );
-    let _ = spring.set_velocity(before.velocity());
+    spring.set_velocity(before.velocity());
     assert_eq!(spring.target(), before.target());
     assert_eq!(spring.velocity(), before.velocity());
+    assert_eq!(spring.target_velocity(), Vec3::ZERO);
     run(&mut app, 600);
     assert_eq!(translation(&app, entity), Vec3::X * 10.0);
+}
+
+/// Writes `value` into the named field of the entity's translation spring by reflection, as an
+/// inspector or a scene would: the setters are bypassed.
+fn write_by_reflection(app: &mut App, entity: Entity, path: &[&str], value: &dyn PartialReflect) {
+    let mut spring = app
+        .world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap();
+    let mut field = spring
+        .reflect_mut()
+        .as_struct()
+        .unwrap()
+        .field_mut(path[0])
+        .unwrap();
+    for name in &path[1..] {
+        field = field
+            .reflect_mut()
+            .as_struct()
+            .unwrap()
+            .field_mut(name)
+            .unwrap();
+    }
+    field.apply(value);
+}
+
+/// Runs up to ten seconds, asserting the translation finite every frame, and returns whether the
+/// spring came to rest on `target`.
+fn finite_until_rest(app: &mut App, entity: Entity, target: Vec3) -> bool {
+    for _ in 0..600 {
+        app.update();
+        assert!(translation(app, entity).is_finite());
+        if asleep::<Translation>(app, entity) {
+            return translation(app, entity) == target;
+        }
+    }
+    false
 }
 
 /// Reflection (an inspector, a scene file) bypasses the setters: the step refuses the value,
@@ -59,54 +105,70 @@ fn a_nan_target_written_through_reflection_is_refused_by_the_step() {
     let mut app = app(60);
     let entity = spawn_translation(&mut app, Spring::wobbly(), Vec3::ZERO, Vec3::X * 10.0);
     run(&mut app, 5);
-    {
-        let mut spring = app
-            .world_mut()
-            .get_mut::<TranslationSpring>(entity)
-            .unwrap();
-        let field = spring
-            .reflect_mut()
-            .as_struct()
-            .unwrap()
-            .field_mut("target")
-            .unwrap();
-        field.apply(&Vec3::NAN as &dyn PartialReflect);
-    }
-    for _ in 0..600 {
-        app.update();
-        assert!(translation(&app, entity).is_finite());
-    }
-    assert_eq!(translation(&app, entity), Vec3::X * 10.0);
+    write_by_reflection(&mut app, entity, &["target"], &Vec3::NAN);
+    assert!(finite_until_rest(&mut app, entity, Vec3::X * 10.0));
     assert_eq!(translation_spring(&app, entity).target(), Vec3::X * 10.0);
 }
 
-/// Spring parameters made invalid through reflection stop the spring instead of producing NaN.
+/// Invalid spring parameters written through reflection are replaced by the last valid ones
+/// (with a warning): the spring goes on as before and arrives, never frozen and never NaN.
 #[test]
-fn invalid_parameters_written_through_reflection_do_not_step() {
+fn invalid_parameters_written_through_reflection_are_replaced_by_the_last_valid_ones() {
     let mut app = app(60);
     let entity = spawn_translation(&mut app, Spring::wobbly(), Vec3::ZERO, Vec3::X * 10.0);
     run(&mut app, 5);
     let held = translation(&app, entity);
-    {
-        let mut spring = app
-            .world_mut()
-            .get_mut::<TranslationSpring>(entity)
-            .unwrap();
-        let parameters = spring
-            .reflect_mut()
-            .as_struct()
-            .unwrap()
-            .field_mut("spring")
-            .unwrap()
-            .reflect_mut()
-            .as_struct()
-            .unwrap()
-            .field_mut("mass")
-            .unwrap();
-        parameters.apply(&-1.0_f32 as &dyn PartialReflect);
+    write_by_reflection(&mut app, entity, &["spring", "mass"], &-1.0_f32);
+    app.update();
+    assert_ne!(translation(&app, entity), held, "the spring froze");
+    assert_eq!(*translation_spring(&app, entity).spring(), Spring::wobbly());
+    assert!(finite_until_rest(&mut app, entity, Vec3::X * 10.0));
+}
+
+/// An infinite or NaN velocity written through reflection is reset to zero (with a warning):
+/// the spring goes on from where it is and arrives.
+#[test]
+fn a_non_finite_velocity_written_through_reflection_is_reset() {
+    for bad in BAD {
+        let mut app = app(60);
+        let entity = spawn_translation(&mut app, Spring::snappy(), Vec3::ZERO, Vec3::X * 10.0);
+        run(&mut app, 5);
+        write_by_reflection(&mut app, entity, &["velocity"], &bad);
+        assert!(finite_until_rest(&mut app, entity, Vec3::X * 10.0), "{bad}");
     }
-    run(&mut app, 30);
-    assert_eq!(translation(&app, entity), held);
+}
+
+/// A step whose exact result leaves `f32` (a velocity of 3e38 toward a far target) is not
+/// dropped: the state is held at the largest finite values and the spring comes back.
+#[test]
+fn a_step_that_overflows_keeps_a_finite_state_and_comes_back() {
+    let mut app = app(60);
+    let target = Vec3::new(-1000.0, 0.0, 5.0);
+    let entity = spawn_translation(&mut app, Spring::snappy(), Vec3::X * 3e38, target);
+    app.world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap()
+        .set_velocity(Vec3::X * 3e38);
+    run(&mut app, 2);
+    let spring = translation_spring(&app, entity);
+    assert!(translation(&app, entity).is_finite() && spring.velocity().is_finite());
+    assert!(finite_until_rest(&mut app, entity, target));
+}
+
+/// Something writes NaN into the sprung `Transform` itself: the spring restores it from its own
+/// state instead of reading the NaN, and arrives.
+#[test]
+fn a_nan_written_into_the_property_is_overwritten() {
+    let mut app = app(60);
+    let entity = spawn_translation(&mut app, Spring::gentle(), Vec3::ZERO, Vec3::Y * 10.0);
+    run(&mut app, 5);
+    app.world_mut()
+        .get_mut::<Transform>(entity)
+        .unwrap()
+        .translation = Vec3::NAN;
+    app.update();
+    assert!(translation(&app, entity).is_finite());
+    assert!(finite_until_rest(&mut app, entity, Vec3::Y * 10.0));
 }
 
 #[test]

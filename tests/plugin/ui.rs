@@ -3,7 +3,7 @@
 use bevy::color::Oklaba;
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
-use bevy_sprung::{NodeLeftSpring, NodeTopSpring, NodeWidthSpring, UiTransformRotation};
+use bevy_sprung::ui::{NodeLeftSpring, NodeTopSpring, NodeWidthSpring, UiTransformRotation};
 
 use crate::harness::{app, asleep, run};
 
@@ -23,9 +23,9 @@ fn ui_transform_and_node_geometry_spring_in_their_units() {
                 translation: Val2::new(Val::Vw(0.0), Val::Auto),
                 ..default()
             },
-            NodeSizeSpring::new(Spring::snappy(), Vec2::new(200.0, 60.0)),
-            NodeLeftSpring::new(Spring::snappy(), 30.0),
-            UiTranslationSpring::new(Spring::bouncy(), Vec2::new(5.0, -8.0)),
+            NodeSizeSpring::new(Spring::snappy(), Val2::new(px(200.0), vh(60.0))),
+            NodeLeftSpring::new(Spring::snappy(), percent(30.0)),
+            UiTranslationSpring::new(Spring::bouncy(), Val2::new(vw(5.0), px(-8.0))),
             UiScaleSpring::new(Spring::bouncy(), Vec2::splat(1.1)),
             UiRotationSpring::new(Spring::smooth(), Rot2::degrees(15.0)),
         ))
@@ -71,8 +71,8 @@ fn node_sizes_do_not_pass_through_zero() {
                 top: Val::Px(40.0),
                 ..default()
             },
-            NodeWidthSpring::new(bouncy, 0.0),
-            NodeTopSpring::new(bouncy, 0.0),
+            NodeWidthSpring::new(bouncy, percent(0.0)),
+            NodeTopSpring::new(bouncy, px(0.0)),
         ))
         .id();
     let mut overshot = false;

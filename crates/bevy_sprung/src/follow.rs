@@ -2,8 +2,9 @@
 
 use bevy::prelude::*;
 
-use crate::component::{RotationSpring, SpringClock, TranslationSpring};
-use crate::plugin::SpringSettings;
+use crate::clock::SpringTime;
+use crate::spring::{PropertySystems, SpringSystems, SpringTargetMut, spring_schedule};
+use crate::transform::{Rotation, RotationSpring, Translation, TranslationSpring};
 
 /// How the followed entity moves, which decides how its motion is sampled.
 #[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
@@ -126,7 +127,7 @@ fn world_position(
 }
 
 /// After each fixed step: record where fixed-timestep targets are.
-pub(crate) fn sample_fixed_targets(
+fn sample_fixed_targets(
     mut followers: Query<&mut SpringFollow>,
     transforms: Query<(&Transform, Option<&ChildOf>)>,
     globals: Query<&GlobalTransform>,
@@ -144,25 +145,21 @@ pub(crate) fn sample_fixed_targets(
 
 /// Before the translation springs step: aim every follower's spring at its target, with the
 /// target's velocity.
-pub(crate) fn follow_targets(
-    time: Res<Time>,
-    real_time: Res<Time<Real>>,
+fn follow_targets(
+    time: SpringTime,
     fixed_time: Res<Time<Fixed>>,
-    settings: Res<SpringSettings>,
     mut followers: Query<(&mut SpringFollow, &mut TranslationSpring)>,
     transforms: Query<(&Transform, Option<&ChildOf>)>,
     globals: Query<&GlobalTransform>,
 ) {
+    let steps = time.steps();
     for (mut follow, mut spring) in &mut followers {
         let (position, velocity) = match follow.motion {
             TargetMotion::PerFrame => {
                 let Some(position) = world_position(follow.target, &transforms, &globals) else {
                     continue;
                 };
-                let dt = match spring.clock().unwrap_or(settings.default_clock) {
-                    SpringClock::Game => time.delta_secs(),
-                    SpringClock::Real => real_time.delta_secs(),
-                };
+                let dt = steps.dt(spring.clock());
                 let velocity = match follow.last_frame_position {
                     Some(last) if dt > 0.0 => (position - last) / dt,
                     _ => Vec3::ZERO,
@@ -199,20 +196,16 @@ pub(crate) fn follow_targets(
         follow.current = Some(position);
         let goal = position + follow.offset;
         // A non-finite target position is refused by the spring (with a warning).
-        if spring.target() != goal {
-            let _ = spring.set_target(goal);
-        }
+        spring.set_target_if_neq(goal);
         if spring.target_velocity() != velocity {
-            let _ = spring.set_target_velocity(velocity);
+            spring.set_target_velocity(velocity);
         }
     }
 }
 
 /// After the translation springs stepped, before the rotation springs do: turn followers that
 /// look at their target toward it from where they now are.
-pub(crate) fn aim_followers(
-    mut followers: Query<(&SpringFollow, &Transform, &mut RotationSpring)>,
-) {
+fn aim_followers(mut followers: Query<(&SpringFollow, &Transform, &mut RotationSpring)>) {
     for (follow, transform, mut spring) in &mut followers {
         let (Some(look_at), Some(target)) = (follow.look_at, follow.current) else {
             continue;
@@ -221,9 +214,35 @@ pub(crate) fn aim_followers(
         if point.distance_squared(transform.translation) <= f32::EPSILON {
             continue;
         }
-        let rotation = transform.looking_at(point, follow.up).rotation;
-        if spring.target() != rotation {
-            let _ = spring.set_target(rotation);
-        }
+        spring.set_target_if_neq(transform.looking_at(point, follow.up).rotation);
+    }
+}
+
+/// [`SpringFollow`]: camera smoothing (part of [`SpringPlugin`](crate::SpringPlugin)).
+/// Followers are sampled after each fixed step, retargeted before the translation springs step,
+/// and turned toward their target after those and before the rotation springs.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct FollowPlugin;
+
+impl Plugin for FollowPlugin {
+    fn build(&self, app: &mut App) {
+        let schedule = spring_schedule(app);
+        app.register_type::<SpringFollow>()
+            .register_type::<TargetMotion>()
+            .add_systems(
+                FixedPostUpdate,
+                sample_fixed_targets.run_if(any_with_component::<SpringFollow>),
+            )
+            .add_systems(
+                schedule,
+                (
+                    follow_targets.before(PropertySystems::<Translation>::default()),
+                    aim_followers
+                        .after(PropertySystems::<Translation>::default())
+                        .before(PropertySystems::<Rotation>::default()),
+                )
+                    .in_set(SpringSystems)
+                    .run_if(any_with_component::<SpringFollow>),
+            );
     }
 }

@@ -1,18 +1,25 @@
 //! Exact damped springs for Bevy.
 //!
 //! Spring components move a property of their entity — a `Transform`'s translation, rotation or
-//! scale, or any field you describe with a [`SpringProperty`] — toward a target every frame,
-//! with the exact closed-form step of [`sprung`]: the same motion at any frame rate and after a
-//! hitch, momentum kept when retargeted, and no NaN ever written.
+//! scale, a UI node's size or colour, or any field you name with
+//! [`spring_property!`] — toward a target every frame, with the exact closed-form step of
+//! [`sprung`]: the same motion at any frame rate and after a hitch, momentum kept when
+//! retargeted, arrival at any magnitude, and no NaN ever written.
 //!
+//! - **One mechanism**: [`PropertySpring<P>`](spring::PropertySpring) springs any
+//!   [`SpringProperty`](property::SpringProperty); the built-in
+//!   [`TranslationSpring`](transform::TranslationSpring),
+//!   [`RotationSpring`](transform::RotationSpring), [`ScaleSpring`](transform::ScaleSpring),
+//!   the UI and colour springs are aliases, declared with the same one-line macro you use for a
+//!   field of your own. How a value springs — as a vector, never through zero, the short way
+//!   round, in Oklab, in its UI unit — is its [`SpringSpace`](space::SpringSpace).
 //! - **Simulate only what the scene calls for**: each property is a separate component, so only
 //!   what a scene springs is stepped; a spring at rest snaps onto its target, triggers
-//!   [`SpringSettled`] once and sleeps (not iterated, no writes, `Changed<Transform>` stays
-//!   quiet) until its target changes; with the `visibility` feature, springs nobody sees can
-//!   skip frames and [catch up](CatchUpWhenHidden) exactly in one step.
-//! - **One mechanism**: [`PropertySpring<P>`] over a [`SpringProperty`]; the built-in
-//!   [`TranslationSpring`], [`RotationSpring`], [`ScaleSpring`] are aliases, and a field of your
-//!   own component takes a [`LinearProperty`] impl and a [`SpringPropertyPlugin`].
+//!   [`SpringSettled`](spring::SpringSettled) once and sleeps (not iterated, no writes,
+//!   `Changed<Transform>` stays quiet) until its target changes; with the `visibility` feature,
+//!   springs nobody sees skip frames and [catch up](visibility::CatchUpWhenHidden) exactly.
+//! - **Tween replacement and camera smoothing**: UI geometry and colours (feature `ui`),
+//!   [`SpringFollow`](follow::SpringFollow) for cameras, [`Spin`](spin::Spin) for whole turns.
 //!
 //! # Example
 //! ```
@@ -25,81 +32,88 @@
 //!     .world_mut()
 //!     .spawn((Transform::default(), TranslationSpring::new(Spring::snappy(), Vec3::X * 100.0)))
 //!     .id();
-//! app.update();
+//! for _ in 0..90 {
+//!     app.update();
+//! }
 //! ```
 //!
-//! - **Tween replacement**: with the `ui` feature, `UiTransform` (translation, scale,
-//!   rotation), `Node` sizes and offsets, and the UI colours spring too; colours move in Oklab
-//!   and stay in range. [`SpringFollow`] makes a camera follow and look at an entity.
+//! # Layout
+//! Each domain is a module with its own plugin, components and systems, and [`SpringPlugin`]
+//! adds them all: [`clock`] ([`SpringClockPlugin`](clock::SpringClockPlugin)), [`spring`] (the
+//! mechanism: [`SpringSchedulePlugin`](spring::SpringSchedulePlugin),
+//! [`SpringPropertyPlugin`](spring::SpringPropertyPlugin)), [`transform`], [`spin`],
+//! [`follow`], `color`, `ui` and `visibility` (behind their features). Add the domain plugins
+//! alone to spring only what you need.
 //!
 //! # Features
-//! - `visibility`: [`CatchUpWhenHidden`], which needs `ViewVisibility` (`bevy/bevy_camera`).
-//! - `color`: [`Oklab`] springs for any `Color` field you describe with a [`ColorField`].
+//! - `visibility`: [`CatchUpWhenHidden`](visibility::CatchUpWhenHidden), which needs
+//!   `ViewVisibility` (`bevy/bevy_camera`).
+//! - `color`: [`OklabColor`](space::OklabColor) for any `Color` field.
 //! - `sprite`: `Sprite` colour (`color` + `bevy/bevy_sprite`).
 //! - `ui`: `UiTransform`, `Node` geometry, `BackgroundColor`, `BorderColor`, `TextColor` and
 //!   `ImageNode` colour (`color` + `bevy/bevy_ui`).
+//! - `serde`: `Serialize`/`Deserialize` for [`Spring`](sprung::Spring), `RestThreshold`,
+//!   [`SpringClock`](clock::SpringClock) and the spring components' configuration.
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
+pub mod clock;
 #[cfg(feature = "color")]
-mod color;
-mod component;
-mod event;
-mod follow;
+pub mod color;
+pub mod follow;
 mod plugin;
-mod property;
-mod spin;
-mod systems;
+pub mod property;
+pub mod space;
+pub mod spin;
+pub mod spring;
+pub mod transform;
 #[cfg(feature = "ui")]
-mod ui;
-
-#[cfg(feature = "ui")]
-pub use color::{
-    Background, BackgroundColorSpring, Border, BorderColorSpring, ImageColorSpring, ImageTint,
-    Text, TextColorSpring,
-};
-#[cfg(feature = "color")]
-pub use color::{ColorField, Oklab};
-#[cfg(feature = "sprite")]
-pub use color::{SpriteColorSpring, SpriteTint};
+pub mod ui;
 #[cfg(feature = "visibility")]
-pub use component::CatchUpWhenHidden;
-pub use component::{
-    PropertySpring, RotationSpring, ScaleSpring, SignedScaleSpring, SpringAsleep, SpringClock,
-    SpringInputError, TranslationSpring,
-};
-pub use event::SpringSettled;
-pub use follow::{SpringFollow, TargetMotion};
-pub use plugin::{SpringPlugin, SpringPropertyPlugin, SpringSettings, SpringSystems};
-pub use property::{
-    LinearProperty, Reflectable, Rotation, Scale, SignedScale, SpringProperty, SpringVector,
-    Translation, rotation_vector,
-};
-pub use spin::{Spin, SpinAngle, SpinSpring};
+pub mod visibility;
+
+pub use plugin::SpringPlugin;
 pub use sprung;
-#[cfg(feature = "ui")]
-pub use ui::{
-    NodeBottom, NodeBottomSpring, NodeHeight, NodeHeightSpring, NodeLeft, NodeLeftSpring,
-    NodePosition, NodePositionSpring, NodeRight, NodeRightSpring, NodeSize, NodeSizeSpring,
-    NodeTop, NodeTopSpring, NodeWidth, NodeWidthSpring, UiRotationSpring, UiScaleSpring,
-    UiTransformRotation, UiTransformScale, UiTransformTranslation, UiTranslationSpring,
-};
+
+/// What [`spring_property!`] expands to needs these, from this crate whatever the caller's
+/// dependencies are called.
+#[doc(hidden)]
+pub mod __macro {
+    pub use bevy::reflect::TypePath;
+    pub use sprung::RestThreshold;
+}
 
 /// The types most apps need: `use bevy_sprung::prelude::*;`.
 pub mod prelude {
-    #[cfg(feature = "visibility")]
-    pub use crate::CatchUpWhenHidden;
+    pub use crate::SpringPlugin;
+    pub use crate::clock::{DefaultSpringClock, SpringClock};
     #[cfg(feature = "sprite")]
-    pub use crate::SpriteColorSpring;
+    pub use crate::color::SpriteColorSpring;
     #[cfg(feature = "ui")]
-    pub use crate::{
-        BackgroundColorSpring, BorderColorSpring, ImageColorSpring, NodePositionSpring,
-        NodeSizeSpring, TextColorSpring, UiRotationSpring, UiScaleSpring, UiTranslationSpring,
+    pub use crate::color::{
+        BackgroundColorSpring, BorderColorSpring, ImageColorSpring, TextColorSpring,
     };
-    pub use crate::{
-        LinearProperty, PropertySpring, Rotation, RotationSpring, Scale, ScaleSpring, SignedScale,
-        SignedScaleSpring, Spin, SpinSpring, SpringAsleep, SpringClock, SpringPlugin,
-        SpringProperty, SpringPropertyPlugin, SpringSettled, SpringSystems, Translation,
+    pub use crate::follow::{SpringFollow, TargetMotion};
+    pub use crate::property::SpringProperty;
+    #[cfg(feature = "color")]
+    pub use crate::space::OklabColor;
+    #[cfg(feature = "ui")]
+    pub use crate::space::{Length, Length2};
+    pub use crate::space::{Linear, NeverThroughZero, ShortestAngle, ShortestArc};
+    pub use crate::spin::{Spin, SpinSpring};
+    pub use crate::spring::{
+        PropertySpring, SpringAsleep, SpringPropertyPlugin, SpringSettled, SpringSystems,
+        SpringTargetMut,
+    };
+    pub use crate::spring_property;
+    pub use crate::transform::{
+        Rotation, RotationSpring, Scale, ScaleSpring, SignedScale, SignedScaleSpring, Translation,
         TranslationSpring,
     };
-    pub use crate::{SpringFollow, TargetMotion};
+    #[cfg(feature = "ui")]
+    pub use crate::ui::{
+        NodePositionSpring, NodeSizeSpring, UiRotationSpring, UiScaleSpring, UiTranslationSpring,
+    };
+    #[cfg(feature = "visibility")]
+    pub use crate::visibility::CatchUpWhenHidden;
     pub use sprung::{RestThreshold, Spring};
 }

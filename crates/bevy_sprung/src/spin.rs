@@ -1,17 +1,19 @@
 //! Turns by an angle, for motion that orientations cannot express: whole turns.
 
 use bevy::prelude::*;
-use sprung::RestThreshold;
 
-use crate::component::PropertySpring;
-use crate::property::LinearProperty;
+use crate::space::Linear;
+use crate::spring::{
+    PropertySpring, PropertySystems, SpringPropertyPlugin, spring_schedule, step_springs,
+};
+use crate::spring_property;
 
 /// An angle about a fixed axis that sets the entity's rotation: `Transform::rotation` becomes
 /// the rotation by [`angle`](Self::angle) about [`axis`](Self::axis) (and, with feature `ui`,
 /// `UiTransform::rotation` becomes the angle in the node's plane, clockwise on screen as
 /// `UiTransform` turns) whenever the `Spin` changes.
 ///
-/// A [`RotationSpring`](crate::RotationSpring) moves between orientations the short way, so a
+/// A [`RotationSpring`](crate::transform::RotationSpring) moves between orientations the short way, so a
 /// whole turn is no motion to it: 0 and 2π are the same orientation. A [`SpinSpring`] springs
 /// the angle itself, so a coin flip of 3 turns or a settings cog that turns once on hover (what
 /// `bevy_tweening`'s `TransformRotateZLens` tweens) springs through every turn. The angle is not
@@ -96,38 +98,18 @@ impl Spin {
     }
 }
 
-/// [`Spin::angle`], in radians.
-#[derive(Reflect, Debug, Clone, Copy)]
-pub struct SpinAngle;
-
-impl LinearProperty for SpinAngle {
-    type Component = Spin;
-    type Value = f32;
-
-    /// A thousandth of a radian (0.06°) and a hundredth of a radian per second, as
-    /// [`Rotation`](crate::Rotation).
-    #[inline]
-    fn default_rest() -> RestThreshold<f32> {
-        RestThreshold::new(1e-3, 1e-2)
-    }
-
-    #[inline]
-    fn get(spin: &Spin) -> f32 {
-        spin.angle
-    }
-
-    #[inline]
-    fn set(spin: &mut Spin, angle: f32) {
-        spin.angle = angle;
-    }
-}
+spring_property!(
+    /// [`Spin::angle`], in radians. It rests within a thousandth of a radian (0.06°) and a
+    /// hundredth of a radian per second, as [`Rotation`](crate::transform::Rotation).
+    pub SpinAngle: Spin::angle as Linear<f32>
+);
 
 /// A spring on [`Spin::angle`]: whole turns, see [`Spin`].
 pub type SpinSpring = PropertySpring<SpinAngle>;
 
 /// Sets `Transform::rotation` from each [`Spin`] that changed, writing only a rotation that
 /// differs.
-pub(crate) fn apply_spin(mut spins: Query<(&Spin, &mut Transform), Changed<Spin>>) {
+fn apply_spin(mut spins: Query<(&Spin, &mut Transform), Changed<Spin>>) {
     for (spin, mut transform) in &mut spins {
         let rotation = spin.rotation();
         if transform.rotation != rotation {
@@ -140,11 +122,40 @@ pub(crate) fn apply_spin(mut spins: Query<(&Spin, &mut Transform), Changed<Spin>
 /// clockwise on screen, as `UiTransform`'s y axis points down), writing only a rotation that
 /// differs.
 #[cfg(feature = "ui")]
-pub(crate) fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
+fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
     for (spin, mut transform) in &mut spins {
         let rotation = spin.plane_rotation();
         if transform.rotation != rotation {
             transform.rotation = rotation;
         }
+    }
+}
+
+/// [`Spin`] and [`SpinSpring`]: whole turns (part of [`SpringPlugin`](crate::SpringPlugin)).
+/// A spin sets the rotation right after its spring stepped, inside the spin's property set, so
+/// it is ordered with every other property that writes a `Transform`.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct SpinPlugin;
+
+impl Plugin for SpinPlugin {
+    fn build(&self, app: &mut App) {
+        let schedule = spring_schedule(app);
+        app.add_plugins(SpringPropertyPlugin::<SpinAngle>::default())
+            .register_type::<Spin>()
+            .add_systems(
+                schedule,
+                apply_spin
+                    .after(step_springs::<SpinAngle>)
+                    .in_set(PropertySystems::<SpinAngle>::default())
+                    .run_if(any_with_component::<Spin>),
+            );
+        #[cfg(feature = "ui")]
+        app.add_systems(
+            schedule,
+            apply_ui_spin
+                .after(step_springs::<SpinAngle>)
+                .in_set(PropertySystems::<SpinAngle>::default())
+                .run_if(any_with_component::<Spin>),
+        );
     }
 }

@@ -1,0 +1,96 @@
+//! Which clock springs advance with.
+
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
+
+/// Which clock a spring advances with.
+#[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq, Hash)]
+#[reflect(Debug, Default, PartialEq, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum SpringClock {
+    /// The schedule's own [`Time`]: `Time<Virtual>` in `PostUpdate` (it stops while the game is
+    /// paused), `Time<Fixed>` in `FixedUpdate`.
+    #[default]
+    Game,
+    /// `Time<Real>`: keeps going while the game is paused (menus, UI).
+    Real,
+}
+
+/// The clock of every spring that does not choose its own
+/// ([`PropertySpring::with_clock`](crate::spring::PropertySpring::with_clock)). Change it at
+/// any time; [`SpringPlugin::with_clock`](crate::SpringPlugin::with_clock) sets it at startup.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// // A menu-only app: every spring on the real clock, so pausing the game never stops the UI.
+/// let mut app = App::new();
+/// app.add_plugins((MinimalPlugins, SpringPlugin::default()));
+/// app.insert_resource(DefaultSpringClock(SpringClock::Real));
+/// ```
+#[derive(Resource, Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
+#[reflect(Resource, Debug, Default, PartialEq, Clone)]
+pub struct DefaultSpringClock(pub SpringClock);
+
+/// The time step of this frame on each clock, for the systems that step springs.
+#[derive(SystemParam)]
+pub(crate) struct SpringTime<'w> {
+    time: Res<'w, Time>,
+    real: Res<'w, Time<Real>>,
+    default: Res<'w, DefaultSpringClock>,
+}
+
+/// This frame's time steps, read once per system run.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FrameSteps {
+    game: f32,
+    real: f32,
+    default: SpringClock,
+}
+
+impl SpringTime<'_> {
+    /// The time steps of this frame.
+    pub(crate) fn steps(&self) -> FrameSteps {
+        FrameSteps {
+            game: self.time.delta_secs(),
+            real: self.real.delta_secs(),
+            default: self.default.0,
+        }
+    }
+}
+
+impl FrameSteps {
+    /// The step of `clock`, or of the default clock for `None`.
+    #[inline]
+    pub(crate) fn dt(self, clock: Option<SpringClock>) -> f32 {
+        match clock.unwrap_or(self.default) {
+            SpringClock::Game => self.game,
+            SpringClock::Real => self.real,
+        }
+    }
+}
+
+/// Registers [`SpringClock`] and inserts the [`DefaultSpringClock`] (part of
+/// [`SpringPlugin`](crate::SpringPlugin)).
+#[derive(Debug, Default, Clone, Copy)]
+pub struct SpringClockPlugin {
+    /// The default clock to insert if the app has none yet.
+    pub default: SpringClock,
+}
+
+impl Plugin for SpringClockPlugin {
+    fn build(&self, app: &mut App) {
+        if !app.world().contains_resource::<DefaultSpringClock>() {
+            app.insert_resource(DefaultSpringClock(self.default));
+        }
+        app.register_type::<SpringClock>()
+            .register_type::<DefaultSpringClock>();
+    }
+
+    /// Adding it again keeps the clock already set.
+    fn is_unique(&self) -> bool {
+        false
+    }
+}

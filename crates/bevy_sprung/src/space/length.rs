@@ -1,0 +1,158 @@
+//! UI lengths (`Val`), sprung in the unit of their target.
+
+use bevy::math::Vec2;
+use bevy::ui::{Val, Val2};
+
+use super::{AffineSpace, SpringSpace};
+
+/// The number of a length in its own unit (pixels for `Px`, percent for `Percent`, …); 0 for
+/// `Auto`.
+#[inline]
+fn number(value: Val) -> f32 {
+    match value {
+        Val::Px(n) | Val::Percent(n) | Val::Vw(n) | Val::Vh(n) | Val::VMin(n) | Val::VMax(n) => n,
+        Val::Auto => 0.0,
+    }
+}
+
+/// `number` in the unit of `unit` (pixels where `unit` is `Auto`).
+#[inline]
+fn in_unit_of(unit: Val, number: f32) -> Val {
+    match unit {
+        Val::Px(_) | Val::Auto => Val::Px(number),
+        Val::Percent(_) => Val::Percent(number),
+        Val::Vw(_) => Val::Vw(number),
+        Val::Vh(_) => Val::Vh(number),
+        Val::VMin(_) => Val::VMin(number),
+        Val::VMax(_) => Val::VMax(number),
+    }
+}
+
+/// Whether `value` can be read in `target`'s unit: the same unit, or `Auto` (read as 0).
+#[inline]
+fn same_unit(value: Val, target: Val) -> bool {
+    matches!(value, Val::Auto)
+        || core::mem::discriminant(&value) == core::mem::discriminant(&target)
+}
+
+/// The offset of one length from its target, in the target's unit; 0 (start from the target)
+/// when the units differ.
+#[inline]
+fn length_offset(value: Val, target: Val) -> f32 {
+    if same_unit(value, target) {
+        number(value) - number(target)
+    } else {
+        0.0
+    }
+}
+
+/// A UI length (`Val`), sprung on its number in the target's unit.
+///
+/// A `left: Val::Percent(10.0)` sprung to `Val::Percent(50.0)` slides to 50 %, as a tween
+/// between two values of one unit would. Units are not converted into one another (that needs
+/// the layout): a field in another unit than its target jumps to the target and springs on from
+/// there, and `Auto` reads as 0 in the target's unit (a target of `Auto` is 0 pixels). Rests
+/// within a twentieth of a unit and half a unit per second: invisible in pixels, and about a
+/// pixel in the relative units (a percent of a 1920-pixel parent is 19 pixels), where half a
+/// pixel's tolerance would snap visibly.
+pub struct Length;
+
+impl SpringSpace for Length {
+    type Value = Val;
+    type Offset = f32;
+
+    #[inline]
+    fn is_valid(value: Val) -> bool {
+        number(value).is_finite()
+    }
+
+    #[inline]
+    fn magnitude(value: Val) -> f32 {
+        number(value).abs()
+    }
+
+    #[inline]
+    fn offset(value: Val, target: Val) -> f32 {
+        length_offset(value, target)
+    }
+
+    #[inline]
+    fn at_offset(target: Val, offset: f32) -> Val {
+        in_unit_of(target, number(target) + offset)
+    }
+
+    #[inline]
+    fn retarget(old_target: Val, new_target: Val, offset: f32, velocity: f32) -> (f32, f32) {
+        if same_unit(old_target, new_target) {
+            (offset + (number(old_target) - number(new_target)), velocity)
+        } else {
+            (0.0, velocity)
+        }
+    }
+
+    const DEFAULT_REST: sprung::RestThreshold<f32> = LENGTH_REST;
+}
+
+impl AffineSpace for Length {
+    #[inline]
+    fn coordinates(value: Val) -> f32 {
+        number(value)
+    }
+}
+
+/// A twentieth of a unit, and half a unit per second.
+const LENGTH_REST: sprung::RestThreshold<f32> = sprung::RestThreshold {
+    offset: 0.05,
+    speed: 0.5,
+};
+
+/// A pair of UI lengths (`Val2`, as `UiTransform::translation`), each sprung as [`Length`] in
+/// its target's unit.
+pub struct Length2;
+
+impl SpringSpace for Length2 {
+    type Value = Val2;
+    type Offset = Vec2;
+
+    #[inline]
+    fn is_valid(value: Val2) -> bool {
+        Length::is_valid(value.x) && Length::is_valid(value.y)
+    }
+
+    #[inline]
+    fn magnitude(value: Val2) -> f32 {
+        Length::magnitude(value.x).max(Length::magnitude(value.y))
+    }
+
+    #[inline]
+    fn offset(value: Val2, target: Val2) -> Vec2 {
+        Vec2::new(
+            length_offset(value.x, target.x),
+            length_offset(value.y, target.y),
+        )
+    }
+
+    #[inline]
+    fn at_offset(target: Val2, offset: Vec2) -> Val2 {
+        Val2::new(
+            Length::at_offset(target.x, offset.x),
+            Length::at_offset(target.y, offset.y),
+        )
+    }
+
+    #[inline]
+    fn retarget(old_target: Val2, new_target: Val2, offset: Vec2, velocity: Vec2) -> (Vec2, Vec2) {
+        let (x, vx) = Length::retarget(old_target.x, new_target.x, offset.x, velocity.x);
+        let (y, vy) = Length::retarget(old_target.y, new_target.y, offset.y, velocity.y);
+        (Vec2::new(x, y), Vec2::new(vx, vy))
+    }
+
+    const DEFAULT_REST: sprung::RestThreshold<f32> = LENGTH_REST;
+}
+
+impl AffineSpace for Length2 {
+    #[inline]
+    fn coordinates(value: Val2) -> Vec2 {
+        Vec2::new(number(value.x), number(value.y))
+    }
+}

@@ -1,0 +1,135 @@
+//! How a value springs: the linear space its offset from the target moves in, and what keeps the
+//! value valid on the way.
+//!
+//! A spring never moves a value directly. It moves the value's *offset* from its target, a
+//! vector `y` with a velocity `v`, by the exact transition of [`sprung`], and turns the offset
+//! back into a value. A [`SpringSpace`] says how: [`Linear`] for values that are vectors
+//! already, [`NeverThroughZero`] for scales and sizes that must not mirror, [`ShortestArc`] and
+//! [`ShortestAngle`] for rotations, `OklabColor` for colours (feature `color`) and `Length`
+//! for UI lengths in their units (feature `ui`).
+
+#[cfg(feature = "color")]
+mod color;
+#[cfg(feature = "ui")]
+mod length;
+mod linear;
+mod rotation;
+mod vector;
+
+#[cfg(feature = "color")]
+pub use color::OklabColor;
+#[cfg(feature = "ui")]
+pub use length::{Length, Length2};
+pub use linear::{AffineSpace, Linear, NeverThroughZero};
+pub use rotation::{ShortestAngle, ShortestArc, rotation_vector};
+pub use vector::SpringVector;
+
+use core::fmt::Debug;
+
+use bevy::reflect::{FromReflect, Reflectable};
+
+/// How a value of type [`Value`](Self::Value) springs: the vector space
+/// ([`Offset`](Self::Offset)) its offset from the target moves in, and the maps between the
+/// two.
+///
+/// The maps must be inverse to rounding: `offset(at_offset(t, y), t) ≈ y`, and
+/// `at_offset(t, 0) == t` exactly (a spring at rest writes its target exactly). For any
+/// finite offset whose squared norm is finite, [`at_offset`](Self::at_offset) must return a
+/// valid value (clamped where the space has a range); that is what lets the plugin check only
+/// the offset on its hot path.
+///
+/// # Example
+/// A space of your own: a brightness kept in `[0, 1]`.
+/// ```
+/// use bevy_sprung::prelude::*;
+/// use bevy_sprung::space::SpringSpace;
+///
+/// struct UnitInterval;
+///
+/// impl SpringSpace for UnitInterval {
+///     type Value = f32;
+///     type Offset = f32;
+///     fn is_valid(value: f32) -> bool { value.is_finite() }
+///     fn magnitude(_: f32) -> f32 { 1.0 }
+///     fn offset(value: f32, target: f32) -> f32 { value - target }
+///     fn at_offset(target: f32, offset: f32) -> f32 { (target + offset).clamp(0.0, 1.0) }
+/// }
+/// ```
+pub trait SpringSpace: Send + Sync + 'static {
+    /// The value as the component stores it, and the type of the target (for a rotation, a
+    /// `Quat`).
+    type Value: Copy + PartialEq + Default + Debug + Send + Sync + Reflectable + FromReflect;
+    /// The space the offset from the target moves in (for a rotation, the rotation vector).
+    type Offset: SpringVector;
+
+    /// Whether `value` can be a target (finite, and for a rotation of non-zero length).
+    #[must_use]
+    fn is_valid(value: Self::Value) -> bool;
+
+    /// The size of a value, for what `f32` resolves near it: a rest tolerance below the
+    /// spacing of `f32` at this magnitude is raised to it (see
+    /// [`RestThreshold::at_magnitude`](sprung::RestThreshold::at_magnitude)). For vectors the
+    /// largest component; for rotations and colours 1.
+    #[must_use]
+    fn magnitude(value: Self::Value) -> f32;
+
+    /// The offset of `value` from `target`.
+    #[must_use]
+    fn offset(value: Self::Value, target: Self::Value) -> Self::Offset;
+
+    /// The value at `offset` from `target`: the inverse of [`offset`](Self::offset), kept in the
+    /// value's valid range.
+    #[must_use]
+    fn at_offset(target: Self::Value, offset: Self::Offset) -> Self::Value;
+
+    /// The offset to continue from when the property holds `current` and the spring carried
+    /// `carried` from its last step: `carried` if `current` is what the spring wrote (the value
+    /// then holds fewer digits than the offset: keeping them is what makes springs arrive),
+    /// otherwise the offset of `current`, which something else wrote.
+    #[inline]
+    #[must_use]
+    fn resume(current: Self::Value, target: Self::Value, carried: Self::Offset) -> Self::Offset {
+        if Self::at_offset(target, carried) == current {
+            carried
+        } else {
+            Self::offset(current, target)
+        }
+    }
+
+    /// The offset and velocity after the target moved from `old_target` to `new_target`. The
+    /// default keeps the value where it is and the velocity as it is; a rotation re-expresses
+    /// the velocity so that the angular velocity in the world is kept.
+    #[inline]
+    #[must_use]
+    fn retarget(
+        old_target: Self::Value,
+        new_target: Self::Value,
+        offset: Self::Offset,
+        velocity: Self::Offset,
+    ) -> (Self::Offset, Self::Offset) {
+        (
+            Self::offset(Self::at_offset(old_target, offset), new_target),
+            velocity,
+        )
+    }
+
+    /// Keeps a step's result in range: `before` and `after` are the offsets at the start and the
+    /// end of the step toward `target`, `velocity` the velocity at the end. The default changes
+    /// nothing; [`NeverThroughZero`] stops a value at zero.
+    #[inline]
+    #[must_use]
+    fn constrain(
+        target: Self::Value,
+        before: Self::Offset,
+        after: Self::Offset,
+        velocity: Self::Offset,
+    ) -> (Self::Offset, Self::Offset) {
+        let _ = (target, before);
+        (after, velocity)
+    }
+
+    /// The tolerances at which a spring in this space counts as at rest, in its units:
+    /// [`RestThreshold::DEFAULT`](sprung::RestThreshold::DEFAULT) (a thousandth of a unit, a
+    /// hundredth of a unit per second) unless the space says otherwise.
+    const DEFAULT_REST: sprung::RestThreshold<f32> = sprung::RestThreshold::<f32>::DEFAULT;
+}

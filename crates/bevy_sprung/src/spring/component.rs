@@ -1,0 +1,452 @@
+//! The spring component and its sleep marker.
+
+mod step;
+
+pub(crate) use step::Stepped;
+
+use core::fmt;
+use core::marker::PhantomData;
+use core::ops::DerefMut;
+
+use bevy::ecs::change_detection::DetectChangesMut;
+use bevy::log::warn_once;
+use bevy::math::VectorSpace;
+use bevy::prelude::*;
+use sprung::{RestThreshold, Spring};
+
+use crate::clock::SpringClock;
+use crate::property::{OffsetOf, SpringProperty, ValueOf};
+use crate::space::{SpringSpace, SpringVector};
+
+/// Moves the property `P` of its entity toward a target with an exact damped spring.
+///
+/// The target can change at any time: the spring keeps its velocity, so a retarget mid-flight
+/// bends the motion instead of restarting it. [`add_impulse`](Self::add_impulse) kicks it;
+/// [`set_target_velocity`](Self::set_target_velocity) makes it follow a moving target without
+/// lag jitter. When the offset and the velocity fall under its [`RestThreshold`], the spring
+/// snaps onto the target, triggers [`SpringSettled<P>`](super::SpringSettled) once, and sleeps:
+/// it is not iterated and writes nothing until the target changes or it is kicked.
+///
+/// It starts from wherever the property is, and reads it every frame: something else may move
+/// the property (a teleport, a drag) and the spring goes on from there. Between its own writes
+/// it keeps the digits of the offset that the property cannot hold, so it arrives at any
+/// magnitude and frame rate instead of stopping a rounding short.
+///
+/// The common path cannot fail: [`set_target`](Self::set_target) and the other setters take any
+/// finite value. A NaN or infinite target, velocity or impulse is refused with one warning and
+/// the state kept; the `try_` forms say so in a `Result`. Values written through reflection (an
+/// inspector, a scene) are checked when the spring next steps: a non-finite target is refused
+/// (the last valid one is kept), a non-finite velocity is reset to zero, and invalid spring
+/// parameters are replaced by the last valid ones, each with one warning.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn(mut commands: Commands) {
+///     commands.spawn((
+///         Transform::default(),
+///         TranslationSpring::new(Spring::snappy(), Vec3::new(100.0, 0.0, 0.0)),
+///         RotationSpring::new(Spring::bouncy(), Quat::from_rotation_z(1.0)),
+///     ));
+/// }
+///
+/// fn retarget(mut springs: Query<&mut TranslationSpring>) {
+///     for mut spring in &mut springs {
+///         // Only touches the component (and wakes the spring) when the target differs.
+///         spring.set_target_if_neq(Vec3::new(-100.0, 50.0, 0.0));
+///     }
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn).add_systems(Update, retarget);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect)]
+#[reflect(Component, Debug, Clone)]
+pub struct PropertySpring<P: SpringProperty> {
+    spring: Spring<f32>,
+    target: ValueOf<P>,
+    velocity: OffsetOf<P>,
+    target_velocity: OffsetOf<P>,
+    rest: RestThreshold<f32>,
+    clock: Option<SpringClock>,
+    /// What the spring carries between frames; not part of its configuration.
+    #[reflect(ignore)]
+    motion: Motion<P>,
+}
+
+/// The state a spring carries between its steps.
+struct Motion<P: SpringProperty> {
+    /// The target the spring moved toward in its last step: a `target` that differs was set
+    /// since (a retarget), and a hidden spring catches up under this one first.
+    active_target: ValueOf<P>,
+    /// The offset of the value from `active_target` after the last step, with the digits the
+    /// value itself cannot hold.
+    offset: OffsetOf<P>,
+    /// Time not yet simulated while hidden, in seconds.
+    pending: f32,
+    /// The last parameters that made a valid spring (restored if reflection breaks them).
+    last_valid: Spring<f32>,
+}
+
+impl<P: SpringProperty> Default for Motion<P> {
+    fn default() -> Self {
+        Self::new(ValueOf::<P>::default(), Spring::default())
+    }
+}
+
+impl<P: SpringProperty> Motion<P> {
+    fn new(target: ValueOf<P>, spring: Spring<f32>) -> Self {
+        Self {
+            active_target: target,
+            offset: OffsetOf::<P>::ZERO,
+            pending: 0.0,
+            last_valid: spring,
+        }
+    }
+}
+
+impl<P: SpringProperty> Clone for Motion<P> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<P: SpringProperty> Copy for Motion<P> {}
+
+impl<P: SpringProperty> Clone for PropertySpring<P> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<P: SpringProperty> Copy for PropertySpring<P> {}
+
+/// Why an input to a [`PropertySpring`] was refused.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SpringInputError {
+    /// A NaN or infinite target.
+    NonFiniteTarget,
+    /// A NaN or infinite velocity, impulse or target velocity (or a velocity that an impulse
+    /// would make infinite).
+    NonFiniteVelocity,
+}
+
+impl fmt::Display for SpringInputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::NonFiniteTarget => "spring target is not finite",
+            Self::NonFiniteVelocity => "spring velocity is not finite",
+        })
+    }
+}
+
+impl core::error::Error for SpringInputError {}
+
+impl<P: SpringProperty> fmt::Debug for PropertySpring<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("PropertySpring")
+            .field("property", &P::short_type_path())
+            .field("spring", &self.spring)
+            .field("target", &self.target)
+            .field("velocity", &self.velocity)
+            .field("target_velocity", &self.target_velocity)
+            .field("rest", &self.rest)
+            .field("clock", &self.clock)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<P: SpringProperty> PropertySpring<P> {
+    /// A spring toward `target`, starting from wherever the property is, at rest.
+    ///
+    /// A non-finite `target` is refused when the spring first steps (with one warning): the
+    /// spring then holds the property where it is.
+    #[must_use]
+    pub fn new(spring: Spring<f32>, target: ValueOf<P>) -> Self {
+        Self {
+            spring,
+            target,
+            velocity: OffsetOf::<P>::ZERO,
+            target_velocity: OffsetOf::<P>::ZERO,
+            rest: P::DEFAULT_REST,
+            clock: None,
+            motion: Motion::new(target, spring),
+        }
+    }
+
+    /// The same spring with rest tolerances `rest` (in the property's units).
+    #[must_use]
+    pub fn with_rest(mut self, rest: RestThreshold<f32>) -> Self {
+        self.rest = rest;
+        self
+    }
+
+    /// The same spring advancing with `clock` instead of the [default
+    /// clock](crate::clock::DefaultSpringClock): for example UI springs on
+    /// [`SpringClock::Real`] keep animating while the game is paused.
+    #[must_use]
+    pub fn with_clock(mut self, clock: SpringClock) -> Self {
+        self.clock = Some(clock);
+        self
+    }
+
+    /// The same spring starting with `velocity` (refused with a warning if not finite).
+    #[must_use]
+    pub fn with_velocity(mut self, velocity: OffsetOf<P>) -> Self {
+        self.set_velocity(velocity);
+        self
+    }
+
+    /// The spring's physical parameters.
+    #[inline]
+    #[must_use]
+    pub fn spring(&self) -> &Spring<f32> {
+        &self.spring
+    }
+
+    /// Changes the spring's parameters; position and velocity carry over.
+    #[inline]
+    pub fn set_spring(&mut self, spring: Spring<f32>) {
+        self.spring = spring;
+        self.motion.last_valid = spring;
+    }
+
+    /// Where the spring is heading.
+    #[inline]
+    #[must_use]
+    pub fn target(&self) -> ValueOf<P> {
+        self.target
+    }
+
+    /// Retargets the spring, keeping its velocity; wakes it if it slept. A NaN or infinite
+    /// `target` is refused: one warning is logged and nothing changes
+    /// ([`try_set_target`](Self::try_set_target) returns the refusal).
+    ///
+    /// Through a `Mut` from a query, [`set_target_if_neq`](SpringTargetMut::set_target_if_neq)
+    /// does the same without marking the component changed when the target is already `target`.
+    #[inline]
+    pub fn set_target(&mut self, target: ValueOf<P>) {
+        let _refused = self.try_set_target(target);
+    }
+
+    /// [`set_target`](Self::set_target), returning the refusal of a non-finite `target`.
+    ///
+    /// # Errors
+    /// [`SpringInputError::NonFiniteTarget`] (also logged once); nothing changes.
+    pub fn try_set_target(&mut self, target: ValueOf<P>) -> Result<(), SpringInputError> {
+        if P::Space::is_valid(target) {
+            self.target = target;
+            Ok(())
+        } else {
+            warn_once!("bevy_sprung: refused a non-finite spring target {target:?}");
+            Err(SpringInputError::NonFiniteTarget)
+        }
+    }
+
+    /// The velocity in the spring's space (units per second; for a rotation, the rate of the
+    /// rotation vector relative to the target, in rad/s).
+    #[inline]
+    #[must_use]
+    pub fn velocity(&self) -> OffsetOf<P> {
+        self.velocity
+    }
+
+    /// Sets the velocity; wakes the spring. A non-finite velocity is refused with one warning
+    /// and nothing changes.
+    #[inline]
+    pub fn set_velocity(&mut self, velocity: OffsetOf<P>) {
+        let _refused = self.try_set_velocity(velocity);
+    }
+
+    /// [`set_velocity`](Self::set_velocity), returning the refusal.
+    ///
+    /// # Errors
+    /// [`SpringInputError::NonFiniteVelocity`] (also logged once); nothing changes.
+    pub fn try_set_velocity(&mut self, velocity: OffsetOf<P>) -> Result<(), SpringInputError> {
+        self.velocity = finite_velocity(velocity, "velocity")?;
+        Ok(())
+    }
+
+    /// Adds `velocity_change` to the velocity (a kick, a punch); wakes the spring. A non-finite
+    /// impulse, or one that would make the velocity infinite, is refused with one warning and
+    /// nothing changes.
+    #[inline]
+    pub fn add_impulse(&mut self, velocity_change: OffsetOf<P>) {
+        let _refused = self.try_add_impulse(velocity_change);
+    }
+
+    /// [`add_impulse`](Self::add_impulse), returning the refusal.
+    ///
+    /// # Errors
+    /// [`SpringInputError::NonFiniteVelocity`] (also logged once); nothing changes.
+    pub fn try_add_impulse(
+        &mut self,
+        velocity_change: OffsetOf<P>,
+    ) -> Result<(), SpringInputError> {
+        finite_velocity(velocity_change, "impulse")?;
+        self.velocity =
+            finite_velocity(self.velocity + velocity_change, "velocity after an impulse")?;
+        Ok(())
+    }
+
+    /// How fast the target itself moves. With a non-zero target velocity each step follows a
+    /// target moving at that velocity during the frame and ending at [`target`](Self::target)
+    /// (an exact first-order hold): the steady lag `c·r/k` is reproduced exactly, with no
+    /// jitter from uneven frame times. A spring following a moving target does not sleep.
+    #[inline]
+    #[must_use]
+    pub fn target_velocity(&self) -> OffsetOf<P> {
+        self.target_velocity
+    }
+
+    /// Sets how fast the target moves (see [`target_velocity`](Self::target_velocity)). A
+    /// non-finite velocity is refused with one warning and nothing changes.
+    #[inline]
+    pub fn set_target_velocity(&mut self, velocity: OffsetOf<P>) {
+        let _refused = self.try_set_target_velocity(velocity);
+    }
+
+    /// [`set_target_velocity`](Self::set_target_velocity), returning the refusal.
+    ///
+    /// # Errors
+    /// [`SpringInputError::NonFiniteVelocity`] (also logged once); nothing changes.
+    pub fn try_set_target_velocity(
+        &mut self,
+        velocity: OffsetOf<P>,
+    ) -> Result<(), SpringInputError> {
+        self.target_velocity = finite_velocity(velocity, "target velocity")?;
+        Ok(())
+    }
+
+    /// The rest tolerances, as set. The spring applies them raised to what `f32` resolves at the
+    /// target ([`RestThreshold::at_magnitude`]): near `1e6` an offset tolerance below `0.0625`
+    /// is `0.0625`.
+    #[inline]
+    #[must_use]
+    pub fn rest(&self) -> RestThreshold<f32> {
+        self.rest
+    }
+
+    /// Changes the rest tolerances.
+    #[inline]
+    pub fn set_rest(&mut self, rest: RestThreshold<f32>) {
+        self.rest = rest;
+    }
+
+    /// The clock the spring advances with, if it overrides the default.
+    #[inline]
+    #[must_use]
+    pub fn clock(&self) -> Option<SpringClock> {
+        self.clock
+    }
+
+    /// Changes the clock (`None`: the [default clock](crate::clock::DefaultSpringClock)).
+    #[inline]
+    pub fn set_clock(&mut self, clock: Option<SpringClock>) {
+        self.clock = clock;
+    }
+
+    /// Whether the spring has something to do: a target other than where it rests, a velocity,
+    /// or a moving target.
+    #[inline]
+    #[must_use]
+    pub fn wants_to_move(&self) -> bool {
+        self.target != self.motion.active_target
+            || self.velocity != OffsetOf::<P>::ZERO
+            || self.target_velocity != OffsetOf::<P>::ZERO
+    }
+}
+
+/// `velocity` if finite; otherwise one warning naming `what`, and an error.
+fn finite_velocity<V: SpringVector>(velocity: V, what: &str) -> Result<V, SpringInputError> {
+    if velocity.is_finite() {
+        Ok(velocity)
+    } else {
+        warn_once!("bevy_sprung: refused a non-finite spring {what}: {velocity:?}");
+        Err(SpringInputError::NonFiniteVelocity)
+    }
+}
+
+/// Retargeting through Bevy's change detection: on a `Mut<PropertySpring<P>>` from a query (or
+/// any [`DetectChangesMut`]), [`set_target_if_neq`](Self::set_target_if_neq) retargets only
+/// when the target differs, and otherwise leaves the component untouched — not marked changed,
+/// so a sleeping spring stays asleep. It replaces the `if spring.target() != x` guard, as Bevy's
+/// `set_if_neq` does for whole components.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// #[derive(Component)]
+/// struct Selected(bool);
+///
+/// // Runs every frame; only a change of selection touches (and wakes) a spring.
+/// fn grow_selected(mut pieces: Query<(&Selected, &mut ScaleSpring)>) {
+///     for (selected, mut scale) in &mut pieces {
+///         let size = if selected.0 { 1.2 } else { 1.0 };
+///         scale.set_target_if_neq(Vec3::splat(size));
+///     }
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Update, grow_selected);
+/// # app.world_mut().spawn((Transform::default(), Selected(true), ScaleSpring::new(Spring::bouncy(), Vec3::ONE)));
+/// # app.update();
+/// ```
+pub trait SpringTargetMut {
+    /// The target's type.
+    type Value;
+
+    /// Retargets (as [`PropertySpring::set_target`]) if `target` differs from the current
+    /// target, and returns whether it did. A non-finite `target` is refused with one warning and
+    /// returns `false`.
+    fn set_target_if_neq(&mut self, target: Self::Value) -> bool;
+}
+
+impl<P, D> SpringTargetMut for D
+where
+    P: SpringProperty,
+    D: DetectChangesMut<Inner = PropertySpring<P>> + DerefMut<Target = PropertySpring<P>>,
+{
+    type Value = ValueOf<P>;
+
+    #[inline]
+    fn set_target_if_neq(&mut self, target: ValueOf<P>) -> bool {
+        if self.bypass_change_detection().target == target {
+            return false;
+        }
+        if !P::Space::is_valid(target) {
+            warn_once!("bevy_sprung: refused a non-finite spring target {target:?}");
+            return false;
+        }
+        let spring: &mut PropertySpring<P> = self;
+        spring.target = target;
+        true
+    }
+}
+
+/// Present while the spring on property `P` of this entity rests; the plugin adds and removes
+/// it. Resting springs are not iterated, so a scene of sleeping springs costs almost nothing.
+#[derive(Component, Reflect)]
+#[reflect(Component, Default, Debug)]
+pub struct SpringAsleep<P: SpringProperty>(#[reflect(ignore)] PhantomData<fn() -> P>);
+
+impl<P: SpringProperty> Default for SpringAsleep<P> {
+    fn default() -> Self {
+        Self(PhantomData)
+    }
+}
+
+impl<P: SpringProperty> Clone for SpringAsleep<P> {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl<P: SpringProperty> fmt::Debug for SpringAsleep<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "SpringAsleep<{}>", P::short_type_path())
+    }
+}

@@ -1,0 +1,266 @@
+//! One frame of a spring: the exact step in its property's space, the checks that keep it finite
+//! and arriving, and the rest test.
+
+use bevy::log::warn_once;
+use bevy::math::{NormedVectorSpace, VectorSpace};
+use bevy::prelude::*;
+use sprung::{RestThreshold, Spring, SpringState, Transition};
+
+use super::PropertySpring;
+use crate::property::{OffsetOf, SpringProperty, ValueOf};
+use crate::space::{SpringSpace, SpringVector};
+use crate::spring::cache::TransitionCache;
+
+/// What one frame did to a spring.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Stepped {
+    /// It moved and keeps moving.
+    Moving,
+    /// It reached rest and was snapped onto its target.
+    Settled,
+    /// It is hidden: the time was put aside for a later exact catch-up.
+    Deferred,
+}
+
+/// `2⁻⁶⁴` and `2⁶⁴`: an overflowing step is redone on the state scaled by the first (exactly,
+/// a power of two) and scaled back by the second.
+const DOWN: f32 = 1.0 / 18_446_744_073_709_551_616.0;
+const UP: f32 = 18_446_744_073_709_551_616.0;
+
+/// The exact step of offset `y` and velocity `v` toward a constant target, in the increment form
+/// `(y, v) + D·(y, v)` (see [`Transition`]).
+#[inline]
+fn increment_step<V: SpringVector>(transition: &Transition<f32>, y: V, v: V) -> (V, V) {
+    let [[d00, d01], [d10, d11]] = transition.increment_matrix();
+    (y + (y * d00 + v * d01), v + (v * d11 + y * d10))
+}
+
+/// The exact step of offset `y` (from the target's end-of-step position) and velocity `v`
+/// toward a target moving at `rate`.
+#[inline]
+fn moving_step<V: SpringVector>(transition: &Transition<f32>, y: V, v: V, rate: V) -> (V, V) {
+    let next = transition.step_toward_moving(SpringState::new(y, v), V::ZERO, rate);
+    (next.position, next.velocity)
+}
+
+/// Whether a squared length is within `tolerance`, compared in `f64` (where the square neither
+/// overflows nor loses digits to subnormals).
+#[inline]
+fn within(squared: f32, tolerance: f32) -> bool {
+    let tolerance = f64::from(tolerance);
+    f64::from(squared) <= tolerance * tolerance
+}
+
+impl<P: SpringProperty> PropertySpring<P> {
+    /// One frame of the spring over `dt` (`hidden`: nobody sees it, defer), writing the
+    /// component's property only if it changed.
+    ///
+    /// The common case — a visible spring toward the target of its last step, which does not
+    /// move, with no time pending — is straight-line; every other case, and any result that is
+    /// not finite, goes the general way from the same, untouched state.
+    #[inline]
+    pub(crate) fn step(
+        &mut self,
+        component: &mut Mut<P::Component>,
+        dt: f32,
+        hidden: bool,
+        cache: &mut TransitionCache,
+    ) -> Stepped {
+        let current = P::get(component);
+        if !hidden
+            && dt > 0.0
+            && self.motion.pending == 0.0
+            && self.target == self.motion.active_target
+            && self.target_velocity == OffsetOf::<P>::ZERO
+            && let Some(transition) = cache.get(&self.spring, dt)
+        {
+            let target = self.target;
+            let before = P::Space::resume(current, target, self.motion.offset);
+            let (after, velocity) = increment_step(transition, before, self.velocity);
+            let (after, velocity) = P::Space::constrain(target, before, after, velocity);
+            // A finite squared length means finite components; the rest test reuses both.
+            let (offset_squared, speed_squared) = (after.norm_squared(), velocity.norm_squared());
+            if offset_squared.is_finite() && speed_squared.is_finite() {
+                return self.finish(
+                    component,
+                    current,
+                    (after, velocity),
+                    (offset_squared, speed_squared),
+                );
+            }
+        }
+        self.step_general(component, current, dt, hidden, cache)
+    }
+
+    /// [`step`](Self::step) in every case: retargets, catch-up, moving targets, input written
+    /// through reflection, steps that overflow.
+    #[inline(never)]
+    fn step_general(
+        &mut self,
+        component: &mut Mut<P::Component>,
+        current: ValueOf<P>,
+        dt: f32,
+        hidden: bool,
+        cache: &mut TransitionCache,
+    ) -> Stepped {
+        self.repair(current);
+        let target = self.target;
+        let retargeted = target != self.motion.active_target;
+        if hidden && !retargeted {
+            self.motion.pending += dt;
+            return Stepped::Deferred;
+        }
+        let active = self.motion.active_target;
+        // A property something made invalid (a NaN written into a `Transform`) is overwritten
+        // from the spring's own state.
+        let mut offset = if P::Space::is_valid(current) {
+            P::Space::resume(current, active, self.motion.offset)
+        } else {
+            warn_once!(
+                "bevy_sprung: a sprung property is not finite ({current:?}); the spring restores it"
+            );
+            self.motion.offset
+        };
+        let mut velocity = self.velocity;
+        // Catch up the hidden time under the target that was in effect, then retarget.
+        if self.motion.pending > 0.0 {
+            let pending = core::mem::take(&mut self.motion.pending);
+            (offset, velocity) = self.advance(cache, active, (offset, velocity), pending);
+        }
+        if retargeted {
+            (offset, velocity) = P::Space::retarget(active, target, offset, velocity);
+            self.motion.active_target = target;
+        }
+        if dt > 0.0 {
+            (offset, velocity) = self.advance(cache, target, (offset, velocity), dt);
+        }
+        let squared = (offset.norm_squared(), velocity.norm_squared());
+        self.finish(component, current, (offset, velocity), squared)
+    }
+
+    /// Restores a valid state where reflection (an inspector, a scene) wrote an invalid one,
+    /// with one warning each: the last valid target, zero velocities, the last valid parameters.
+    #[cold]
+    fn repair(&mut self, current: ValueOf<P>) {
+        if !P::Space::is_valid(self.target) {
+            warn_once!(
+                "bevy_sprung: a spring's target is not finite ({:?}); it keeps its last valid \
+                 target",
+                self.target
+            );
+            let active = self.motion.active_target;
+            self.target = if P::Space::is_valid(active) {
+                active
+            } else if P::Space::is_valid(current) {
+                current
+            } else {
+                ValueOf::<P>::default()
+            };
+            if !P::Space::is_valid(active) {
+                self.motion.active_target = self.target;
+                self.motion.offset = OffsetOf::<P>::ZERO;
+            }
+        }
+        if !self.velocity.is_finite() {
+            warn_once!("bevy_sprung: a spring's velocity is not finite; it is reset to zero");
+            self.velocity = OffsetOf::<P>::ZERO;
+        }
+        if !self.target_velocity.is_finite() {
+            warn_once!(
+                "bevy_sprung: a spring's target velocity is not finite; it is reset to zero"
+            );
+            self.target_velocity = OffsetOf::<P>::ZERO;
+        }
+        if !self.motion.offset.is_finite() {
+            self.motion.offset = OffsetOf::<P>::ZERO;
+        }
+        let spring = self.spring;
+        if Spring::new(spring.mass(), spring.stiffness(), spring.damping()).is_ok() {
+            self.motion.last_valid = spring;
+        } else {
+            warn_once!(
+                "bevy_sprung: a spring has invalid parameters ({spring:?}); it keeps its last \
+                 valid ones"
+            );
+            self.spring = self.motion.last_valid;
+        }
+    }
+
+    /// Advances `(offset, velocity)` by `dt` toward `target` (moving at the spring's target
+    /// velocity), in range. A step whose result overflows `f32` is redone on the state scaled
+    /// down by `2⁶⁴` and scaled back with each component saturated at `±f32::MAX`: the state
+    /// stays finite and the spring still comes back.
+    fn advance(
+        &self,
+        cache: &mut TransitionCache,
+        target: ValueOf<P>,
+        (offset, velocity): (OffsetOf<P>, OffsetOf<P>),
+        dt: f32,
+    ) -> (OffsetOf<P>, OffsetOf<P>) {
+        let Some(transition) = cache.get(&self.spring, dt) else {
+            // Unreachable: `repair` made the parameters valid.
+            return (offset, velocity);
+        };
+        let rate = self.target_velocity;
+        let step = |y, v, r| {
+            let (after, v) = if r == OffsetOf::<P>::ZERO {
+                increment_step(transition, y, v)
+            } else {
+                moving_step(transition, y, v, r)
+            };
+            P::Space::constrain(target, y, after, v)
+        };
+        let (after, next_velocity) = step(offset, velocity, rate);
+        if after.is_finite() && next_velocity.is_finite() {
+            return (after, next_velocity);
+        }
+        warn_once!(
+            "bevy_sprung: a spring step overflowed f32; the state is held at the largest finite \
+             values"
+        );
+        let (after, next_velocity) = step(offset * DOWN, velocity * DOWN, rate * DOWN);
+        ((after * UP).saturate(), (next_velocity * UP).saturate())
+    }
+
+    /// The end of a step to `(offset, velocity)` with squared lengths `squared`: at rest (toward
+    /// a target that does not move) the spring snaps onto its target and settles; the state is
+    /// stored, and the property written if it changed.
+    #[inline]
+    fn finish(
+        &mut self,
+        component: &mut Mut<P::Component>,
+        current: ValueOf<P>,
+        (offset, velocity): (OffsetOf<P>, OffsetOf<P>),
+        (offset_squared, speed_squared): (f32, f32),
+    ) -> Stepped {
+        let target = self.target;
+        let rest = self.effective_rest();
+        let zero = OffsetOf::<P>::ZERO;
+        let (value, offset, velocity, outcome) = if self.target_velocity == zero
+            && within(offset_squared, rest.offset)
+            && within(speed_squared, rest.speed)
+        {
+            // Snapping is what makes sleeping exact: nothing moves until the target changes.
+            (target, zero, zero, Stepped::Settled)
+        } else {
+            (
+                P::Space::at_offset(target, offset),
+                offset,
+                velocity,
+                Stepped::Moving,
+            )
+        };
+        self.motion.offset = offset;
+        self.velocity = velocity;
+        if value != current {
+            P::set(component, value);
+        }
+        outcome
+    }
+
+    /// The rest tolerances as applied: raised to what `f32` resolves at the target.
+    #[inline]
+    fn effective_rest(&self) -> RestThreshold<f32> {
+        self.rest.at_magnitude(P::Space::magnitude(self.target))
+    }
+}

@@ -1,0 +1,15 @@
+//! The mechanism every property shares: the spring component, its step, the systems that run
+//! it, the set they run in, and the event a settled spring triggers.
+
+mod cache;
+mod component;
+mod event;
+mod plugin;
+mod systems;
+
+pub use component::{PropertySpring, SpringAsleep, SpringInputError, SpringTargetMut};
+pub use event::SpringSettled;
+pub use plugin::{PropertySystems, SpringPropertyPlugin, SpringSchedulePlugin, SpringSystems};
+
+pub(crate) use plugin::spring_schedule;
+pub(crate) use systems::step_springs;

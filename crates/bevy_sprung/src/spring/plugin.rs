@@ -1,0 +1,191 @@
+//! The system set, the schedule the springs step in, and the plugin that adds one property.
+
+use core::any::TypeId;
+use core::marker::PhantomData;
+
+use bevy::app::AnimationSystems;
+use bevy::ecs::intern::Interned;
+use bevy::ecs::schedule::{ScheduleLabel, SystemSet};
+use bevy::prelude::*;
+use bevy::transform::TransformSystems;
+
+use super::component::{PropertySpring, SpringAsleep};
+use super::systems::{step_springs, wake_springs};
+use crate::clock::SpringClockPlugin;
+use crate::property::SpringProperty;
+
+/// All of the plugin's systems. In `PostUpdate` (the default schedule) the set runs in
+/// [`AnimationSystems`] and before [`TransformSystems::Propagate`], so `GlobalTransform` (and
+/// `bevy_ui`'s layout, which runs after `AnimationSystems`) see this frame's sprung values.
+/// Order your systems against it: write targets before it, read sprung values after it.
+#[derive(SystemSet, Debug, Clone, PartialEq, Eq, Hash)]
+pub struct SpringSystems;
+
+/// The systems of property `P`: in [`SpringSystems`], after the set of the property registered
+/// before it, so that properties of one component (translation, rotation and scale of a
+/// `Transform`) never run in an ambiguous order. Order against it to run between two
+/// properties (a follower retargets its translation spring before `PropertySystems<Translation>`).
+#[derive(SystemSet)]
+pub struct PropertySystems<P: SpringProperty>(PhantomData<fn() -> P>);
+
+impl<P: SpringProperty> Default for PropertySystems<P> {
+    fn default() -> Self {
+        Self(PhantomData)
+    }
+}
+
+impl<P: SpringProperty> Clone for PropertySystems<P> {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl<P: SpringProperty> core::fmt::Debug for PropertySystems<P> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "PropertySystems<{}>", P::short_type_path())
+    }
+}
+
+impl<P: SpringProperty> PartialEq for PropertySystems<P> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl<P: SpringProperty> Eq for PropertySystems<P> {}
+
+impl<P: SpringProperty> core::hash::Hash for PropertySystems<P> {
+    fn hash<H: core::hash::Hasher>(&self, _: &mut H) {}
+}
+
+/// Where the springs step, and the order their properties were added in: build-time
+/// bookkeeping of the plugins, not a setting.
+#[derive(Resource)]
+pub(crate) struct SpringSchedule {
+    /// The schedule the springs step in.
+    pub(crate) label: Interned<dyn ScheduleLabel>,
+    /// The set of the last property added, which the next one runs after.
+    last_property: Option<Interned<dyn SystemSet>>,
+    /// The properties already added (adding one twice is harmless).
+    registered: Vec<TypeId>,
+}
+
+/// Puts [`SpringSystems`] into the schedule the springs step in (part of
+/// [`SpringPlugin`](crate::SpringPlugin)): in `PostUpdate`, inside [`AnimationSystems`] and
+/// before transform propagation; in any other schedule, as a plain set.
+#[derive(Debug, Clone)]
+pub struct SpringSchedulePlugin {
+    /// The schedule: `PostUpdate` by default, `FixedUpdate` for determinism with a
+    /// fixed-timestep simulation.
+    pub schedule: Interned<dyn ScheduleLabel>,
+}
+
+impl Default for SpringSchedulePlugin {
+    fn default() -> Self {
+        Self {
+            schedule: PostUpdate.intern(),
+        }
+    }
+}
+
+impl Plugin for SpringSchedulePlugin {
+    fn build(&self, app: &mut App) {
+        if let Some(existing) = app.world().get_resource::<SpringSchedule>() {
+            if existing.label != self.schedule {
+                warn!(
+                    "bevy_sprung: springs already step in {:?}; add SpringPlugin before any \
+                     spring property plugin to step them in {:?}",
+                    existing.label, self.schedule
+                );
+            }
+            return;
+        }
+        app.insert_resource(SpringSchedule {
+            label: self.schedule,
+            last_property: None,
+            registered: Vec::new(),
+        });
+        if self.schedule == PostUpdate.intern() {
+            app.configure_sets(
+                PostUpdate,
+                SpringSystems
+                    .in_set(AnimationSystems)
+                    .before(TransformSystems::Propagate),
+            );
+        } else {
+            app.configure_sets(self.schedule, SpringSystems);
+        }
+    }
+
+    /// Adding it again (a property plugin adds it with its defaults) keeps the first.
+    fn is_unique(&self) -> bool {
+        false
+    }
+}
+
+/// The schedule the springs step in. An app without [`SpringPlugin`](crate::SpringPlugin) gets
+/// what springs need to step (the schedule and the clock, with their defaults): every plugin
+/// that adds springing systems starts with this.
+pub(crate) fn spring_schedule(app: &mut App) -> Interned<dyn ScheduleLabel> {
+    if !app.world().contains_resource::<SpringSchedule>() {
+        app.add_plugins((
+            SpringSchedulePlugin::default(),
+            SpringClockPlugin::default(),
+        ));
+    }
+    app.world().resource::<SpringSchedule>().label
+}
+
+/// Adds the systems for one [`SpringProperty`]: springing a field of your own component takes
+/// a [`spring_property!`](crate::spring_property) and this plugin. In an app without
+/// [`SpringPlugin`](crate::SpringPlugin) it adds what springs need to step, with the defaults;
+/// add `SpringPlugin` first to configure them. Adding a property twice (say, once by a library
+/// and once by the app) is harmless.
+pub struct SpringPropertyPlugin<P: SpringProperty>(PhantomData<fn() -> P>);
+
+impl<P: SpringProperty> Default for SpringPropertyPlugin<P> {
+    fn default() -> Self {
+        Self(PhantomData)
+    }
+}
+
+impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
+    fn build(&self, app: &mut App) {
+        let schedule = spring_schedule(app);
+        let mut bookkeeping = app.world_mut().resource_mut::<SpringSchedule>();
+        let property = TypeId::of::<P>();
+        if bookkeeping.registered.contains(&property) {
+            return;
+        }
+        bookkeeping.registered.push(property);
+        let previous = bookkeeping
+            .last_property
+            .replace(PropertySystems::<P>::default().intern());
+        app.register_type::<PropertySpring<P>>()
+            .register_type::<SpringAsleep<P>>()
+            .add_systems(
+                schedule,
+                (wake_springs::<P>, step_springs::<P>)
+                    .chain()
+                    .in_set(PropertySystems::<P>::default())
+                    .run_if(any_with_component::<PropertySpring<P>>),
+            )
+            .configure_sets(
+                schedule,
+                PropertySystems::<P>::default().in_set(SpringSystems),
+            );
+        if let Some(previous) = previous {
+            app.configure_sets(schedule, PropertySystems::<P>::default().after(previous));
+        }
+    }
+
+    fn is_unique(&self) -> bool {
+        false
+    }
+}
+
+impl<P: SpringProperty> core::fmt::Debug for SpringPropertyPlugin<P> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "SpringPropertyPlugin<{}>", P::short_type_path())
+    }
+}
