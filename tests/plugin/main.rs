@@ -8,6 +8,7 @@
 
 mod harness;
 
+mod arrival;
 mod bad_input;
 mod catch_up;
 mod clocks;
@@ -15,6 +16,8 @@ mod follow;
 mod motion;
 mod properties;
 mod scheduling;
+mod serde;
 mod sleeping;
+mod soak;
 mod spin;
 mod ui;

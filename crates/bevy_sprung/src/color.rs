@@ -81,6 +81,13 @@ pub use ui::{
 pub struct ColorSpringPlugin;
 
 impl Plugin for ColorSpringPlugin {
+    #[cfg_attr(
+        not(feature = "sprite"),
+        expect(
+            unused_variables,
+            reason = "with `color` alone there is no colour component to register"
+        )
+    )]
     fn build(&self, app: &mut App) {
         #[cfg(feature = "sprite")]
         app.add_plugins(SpringPropertyPlugin::<SpriteTint>::default());
@@ -91,6 +98,5 @@ impl Plugin for ColorSpringPlugin {
             SpringPropertyPlugin::<TextTint>::default(),
             SpringPropertyPlugin::<ImageTint>::default(),
         ));
-        let _ = app;
     }
 }

@@ -32,8 +32,6 @@ pub enum Parameter {
     Tension,
     /// react-spring's friction (the damping at unit mass).
     Friction,
-    /// An amplitude or tolerance given to a settle-time query.
-    Tolerance,
 }
 
 impl Parameter {
@@ -54,7 +52,6 @@ impl Parameter {
             Self::SmoothTime => "smooth time",
             Self::Tension => "tension",
             Self::Friction => "friction",
-            Self::Tolerance => "tolerance",
         }
     }
 }

@@ -16,6 +16,7 @@
 //! a few nanoseconds once per spring and frame.
 
 use crate::math::{exp, exp_m1, ln, sin, sin_cos, sqrt};
+use crate::modes;
 
 /// Largest `y` for which `e^{−y}` is a normal `f64`: beyond it products with `e^{−y}` are
 /// formed in the exponent (see [`Decay`]).
@@ -241,19 +242,16 @@ fn band(b: f64, w2: f64, w: f64, t: f64, z: f64, tolerance: f64) -> Coefficients
 
 /// Over-damped, modal form.
 ///
-/// `s = √(b² − ω²)` is formed as `b·√((1 − r)(1 + r))`, `r = ω/b`: no `b²` to overflow, and
-/// `1 − r` is exact (Sterbenz) near `r = 1`. The slow rate `λ = b − s` is formed as
-/// `ω·(ω/(b + s))`: `b − s` cancels completely for large `ζ` (in `f32` from `ζ ≈ 1e4` on, where
-/// the spring would then never settle). With `e^{−bt}·sinh(st)/s = e^{−λt}·φ`,
+/// `s = √(b² − ω²)` and the slow rate `λ = b − s` are formed without overflow or cancellation
+/// (see [`modes`]). With `e^{−bt}·sinh(st)/s = e^{−λt}·φ`,
 /// `φ = (1 − e^{−2st})/(2s)` by `expm1`, no `cosh` or `sinh` is ever formed, so nothing
 /// overflows for any `st`.
 #[inline]
 fn overdamped(b: f64, w2: f64, w: f64, t: f64, tolerance: f64) -> Coefficients {
     let one = 1.0;
-    let r = w / b;
-    let s = b * sqrt((one - r) * (one + r));
+    let s = modes::overdamped_split(b, w);
     let fast_rate = b + s;
-    let slow_rate = w * (w / fast_rate);
+    let slow_rate = modes::slow_rate(b, w, s);
     let slow_t = slow_rate * t;
     let phi = decay_integral(s + s, t);
     let decay = Decay::new(slow_t);
@@ -279,15 +277,12 @@ fn overdamped(b: f64, w2: f64, w: f64, t: f64, tolerance: f64) -> Coefficients {
     )
 }
 
-/// Under-damped: `κ = √(ω² − b²)` as `ω·√((1 − q)(1 + q))`, `q = b/ω`, for the same reasons as
-/// `s` in the over-damped form.
+/// Under-damped: `κ = √(ω² − b²)` formed without overflow or cancellation (see [`modes`]).
 #[inline]
 fn underdamped(b: f64, w2: f64, w: f64, t: f64, tolerance: f64) -> Coefficients {
-    let one = 1.0;
     let two = 2.0;
     let bt = b * t;
-    let q = b / w;
-    let kappa = w * sqrt((one - q) * (one + q));
+    let kappa = modes::damped_frequency(b, w);
     // The phase is clamped to the largest finite value: beyond it the phase carries no digits
     // in this precision anyway, and sin_cos(∞) would be NaN.
     let theta = (kappa * t).min(f64::MAX);

@@ -8,7 +8,7 @@
 //! One evaluation covers every regime — under-, critically and over-damped, undamped,
 //! unsprung (`k = 0`) and free (`k = c = 0`) — continuously through `ζ = 1`, without overflow,
 //! cancellation or NaN for any valid finite input. Each matrix entry is within a few units of
-//! roundoff times its condition number of the exact value (tested against a 256-bit reference).
+//! roundoff times its condition number of the exact value (tested against a 320-bit reference).
 //!
 //! # Example
 //! ```
@@ -49,6 +49,7 @@ mod approx_impls;
 mod error;
 mod kernel;
 mod math;
+mod modes;
 mod rest;
 mod scalar;
 #[cfg(feature = "serde")]

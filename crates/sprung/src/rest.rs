@@ -116,7 +116,8 @@ const DEFAULT_SPEED: f64 = 1e-2;
 
 impl RestThreshold<f32> {
     /// 0.001 units and 0.01 units per second: for values of order 1 (metres, radians,
-    /// normalised colours). Use [`RestThreshold::new`] for pixels.
+    /// normalised colours). Use [`RestThreshold::new`] for pixels. (For `f64`,
+    /// [`RestThreshold::default`] gives the same.)
     #[expect(
         clippy::cast_possible_truncation,
         reason = "the constants are exact enough in f32"
@@ -124,14 +125,6 @@ impl RestThreshold<f32> {
     pub const DEFAULT: Self = Self {
         offset: DEFAULT_OFFSET as f32,
         speed: DEFAULT_SPEED as f32,
-    };
-}
-
-impl RestThreshold<f64> {
-    /// 0.001 units and 0.01 units per second, as [`RestThreshold::<f32>::DEFAULT`].
-    pub const DEFAULT: Self = Self {
-        offset: DEFAULT_OFFSET,
-        speed: DEFAULT_SPEED,
     };
 }
 

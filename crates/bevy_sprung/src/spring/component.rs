@@ -450,3 +450,147 @@ impl<P: SpringProperty> fmt::Debug for SpringAsleep<P> {
         write!(f, "SpringAsleep<{}>", P::short_type_path())
     }
 }
+
+#[cfg(feature = "serde")]
+mod serde_impls {
+    //! The spring's configuration in a file: parameters, target, velocities, tolerances and
+    //! clock. Everything read is validated as the setters would; an invalid value is an error
+    //! that names it.
+
+    use serde::de::{self, Deserializer};
+    use serde::{Deserialize, Serialize, Serializer};
+    use sprung::{RestThreshold, Spring};
+
+    use super::{Motion, PropertySpring};
+    use crate::clock::SpringClock;
+    use crate::property::{OffsetOf, SpringProperty, ValueOf};
+    use crate::space::{SpringSpace, SpringVector};
+
+    /// A field that may be left out, written plainly when present (no `Some(…)` in RON).
+    struct Given<T>(Option<T>);
+
+    impl<T> Default for Given<T> {
+        fn default() -> Self {
+            Self(None)
+        }
+    }
+
+    impl<'de, T: Deserialize<'de>> Deserialize<'de> for Given<T> {
+        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+            T::deserialize(deserializer).map(|value| Self(Some(value)))
+        }
+    }
+
+    /// What a file says of a spring.
+    #[derive(Deserialize)]
+    #[serde(
+        deny_unknown_fields,
+        rename = "PropertySpring",
+        bound = "V: Deserialize<'de>, O: Deserialize<'de>"
+    )]
+    struct Read<V, O> {
+        spring: Spring<f32>,
+        target: V,
+        #[serde(default)]
+        velocity: Given<O>,
+        #[serde(default)]
+        target_velocity: Given<O>,
+        #[serde(default)]
+        rest: Given<RestThreshold<f32>>,
+        #[serde(default)]
+        clock: Given<SpringClock>,
+    }
+
+    /// What is written.
+    #[derive(Serialize)]
+    #[serde(rename = "PropertySpring")]
+    struct Written<'a, V, O> {
+        spring: &'a Spring<f32>,
+        target: &'a V,
+        velocity: &'a O,
+        target_velocity: &'a O,
+        rest: &'a RestThreshold<f32>,
+        #[serde(skip_serializing_if = "Option::is_none", serialize_with = "plain")]
+        clock: Option<SpringClock>,
+    }
+
+    /// A present value written as itself, as [`Given`] reads it back.
+    #[expect(
+        clippy::ref_option,
+        reason = "serde's `serialize_with` passes the field by reference"
+    )]
+    fn plain<S: Serializer, T: Serialize>(
+        value: &Option<T>,
+        serializer: S,
+    ) -> Result<S::Ok, S::Error> {
+        match value {
+            Some(value) => value.serialize(serializer),
+            None => serializer.serialize_none(),
+        }
+    }
+
+    /// Writes `(spring, target, velocity, target_velocity, rest[, clock])`; the spring's
+    /// carried state is not configuration and is not written (a spring read back starts from
+    /// wherever its property is).
+    impl<P: SpringProperty> Serialize for PropertySpring<P>
+    where
+        ValueOf<P>: Serialize,
+        OffsetOf<P>: Serialize,
+    {
+        fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+            Written {
+                spring: &self.spring,
+                target: &self.target,
+                velocity: &self.velocity,
+                target_velocity: &self.target_velocity,
+                rest: &self.rest,
+                clock: self.clock,
+            }
+            .serialize(serializer)
+        }
+    }
+
+    /// Reads a spring: `spring` (any parametrisation, see [`Spring`]'s `Deserialize`) and
+    /// `target` are required; `velocity`, `target_velocity`, `rest` and `clock` default to
+    /// zero, the property's tolerances and the default clock. A non-finite target or velocity
+    /// is an error, as is an invalid spring.
+    impl<'de, P: SpringProperty> Deserialize<'de> for PropertySpring<P>
+    where
+        ValueOf<P>: Deserialize<'de>,
+        OffsetOf<P>: Deserialize<'de>,
+    {
+        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+            let read = Read::<ValueOf<P>, OffsetOf<P>>::deserialize(deserializer)?;
+            if !P::Space::is_valid(read.target) {
+                return Err(de::Error::custom(format_args!(
+                    "spring target {:?} is not finite",
+                    read.target
+                )));
+            }
+            let mut spring = Self::new(read.spring, read.target);
+            for (name, given, field) in [
+                ("velocity", read.velocity, &mut spring.velocity),
+                (
+                    "target_velocity",
+                    read.target_velocity,
+                    &mut spring.target_velocity,
+                ),
+            ] {
+                if let Given(Some(value)) = given {
+                    if !value.is_finite() {
+                        return Err(de::Error::custom(format_args!(
+                            "spring {name} {value:?} is not finite"
+                        )));
+                    }
+                    *field = value;
+                }
+            }
+            if let Given(Some(rest)) = read.rest {
+                spring.rest = rest;
+            }
+            spring.clock = read.clock.0;
+            spring.motion = Motion::new(read.target, read.spring);
+            Ok(spring)
+        }
+    }
+}

@@ -6,6 +6,8 @@ mod component;
 mod event;
 mod plugin;
 mod systems;
+#[cfg(test)]
+mod tests;
 
 pub use component::{PropertySpring, SpringAsleep, SpringInputError, SpringTargetMut};
 pub use event::SpringSettled;

@@ -3,7 +3,8 @@
 
 use bevy::log::warn_once;
 use bevy::math::{NormedVectorSpace, VectorSpace};
-use bevy::prelude::*;
+use core::ops::DerefMut;
+
 use sprung::{RestThreshold, Spring, SpringState, Transition};
 
 use super::PropertySpring;
@@ -53,20 +54,20 @@ fn within(squared: f32, tolerance: f32) -> bool {
 
 impl<P: SpringProperty> PropertySpring<P> {
     /// One frame of the spring over `dt` (`hidden`: nobody sees it, defer), writing the
-    /// component's property only if it changed.
+    /// component's property only if it changed (through a `Mut`, a write is a change).
     ///
     /// The common case — a visible spring toward the target of its last step, which does not
     /// move, with no time pending — is straight-line; every other case, and any result that is
     /// not finite, goes the general way from the same, untouched state.
     #[inline]
-    pub(crate) fn step(
+    pub(crate) fn step<C: DerefMut<Target = P::Component>>(
         &mut self,
-        component: &mut Mut<P::Component>,
+        component: &mut C,
         dt: f32,
         hidden: bool,
         cache: &mut TransitionCache,
     ) -> Stepped {
-        let current = P::get(component);
+        let current = P::get(&**component);
         if !hidden
             && dt > 0.0
             && self.motion.pending == 0.0
@@ -95,9 +96,9 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// [`step`](Self::step) in every case: retargets, catch-up, moving targets, input written
     /// through reflection, steps that overflow.
     #[inline(never)]
-    fn step_general(
+    fn step_general<C: DerefMut<Target = P::Component>>(
         &mut self,
-        component: &mut Mut<P::Component>,
+        component: &mut C,
         current: ValueOf<P>,
         dt: f32,
         hidden: bool,
@@ -226,9 +227,9 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// a target that does not move) the spring snaps onto its target and settles; the state is
     /// stored, and the property written if it changed.
     #[inline]
-    fn finish(
+    fn finish<C: DerefMut<Target = P::Component>>(
         &mut self,
-        component: &mut Mut<P::Component>,
+        component: &mut C,
         current: ValueOf<P>,
         (offset, velocity): (OffsetOf<P>, OffsetOf<P>),
         (offset_squared, speed_squared): (f32, f32),
@@ -253,7 +254,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         self.motion.offset = offset;
         self.velocity = velocity;
         if value != current {
-            P::set(component, value);
+            P::set(&mut **component, value);
         }
         outcome
     }

@@ -1,0 +1,83 @@
+//! Spring components in RON: their configuration round-trips, a spring read from a file works
+//! in an app, and invalid files are clear errors.
+
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+
+use crate::harness::{app, asleep, run, translation};
+
+fn round_trip<T>(value: &T) -> T
+where
+    T: serde::Serialize + for<'de> serde::Deserialize<'de>,
+{
+    let text = ron::to_string(value).unwrap();
+    ron::from_str(&text).unwrap_or_else(|error| panic!("{text}: {error}"))
+}
+
+#[test]
+fn configurations_round_trip() {
+    let translation = TranslationSpring::new(Spring::bouncy(), Vec3::new(1.0, -2.5, 1e5))
+        .with_velocity(Vec3::X * 3.0)
+        .with_rest(RestThreshold::new(0.5, 5.0))
+        .with_clock(SpringClock::Real);
+    let back = round_trip(&translation);
+    assert_eq!(back.spring(), translation.spring());
+    assert_eq!(back.target(), translation.target());
+    assert_eq!(back.velocity(), translation.velocity());
+    assert_eq!(back.rest(), translation.rest());
+    assert_eq!(back.clock(), Some(SpringClock::Real));
+
+    let slide = UiTranslationSpring::new(Spring::smooth(), Val2::new(percent(30.0), px(-8.0)));
+    assert_eq!(round_trip(&slide).target(), slide.target());
+    let fade = BackgroundColorSpring::new(Spring::snappy(), Color::srgba(0.2, 0.4, 0.9, 0.5));
+    assert_eq!(round_trip(&fade).target(), fade.target());
+    let turn = RotationSpring::new(Spring::wobbly(), Quat::from_rotation_y(1.0));
+    assert_eq!(round_trip(&turn).target(), turn.target());
+}
+
+/// A file need only name the spring (any parametrisation) and the target.
+#[test]
+fn a_spring_read_from_a_file_springs() {
+    let spring: TranslationSpring =
+        ron::from_str("(spring: (duration: 0.4, bounce: 0.2), target: (10.0, 20.0, 0.0))").unwrap();
+    assert_eq!(spring.rest(), RestThreshold::DEFAULT);
+    assert_eq!(spring.velocity(), Vec3::ZERO);
+    let mut app = app(60);
+    let entity = app.world_mut().spawn((Transform::default(), spring)).id();
+    run(&mut app, 180);
+    assert!(asleep::<Translation>(&app, entity));
+    assert_eq!(translation(&app, entity), Vec3::new(10.0, 20.0, 0.0));
+}
+
+#[test]
+fn invalid_files_are_clear_errors() {
+    let cases = [
+        (
+            "(spring: (stiffness: -1.0, damping: 1.0), target: (0.0, 0.0, 0.0))",
+            "stiffness must not be negative",
+        ),
+        (
+            "(spring: (preset: snappy), target: (NaN, 0.0, 0.0))",
+            "target",
+        ),
+        (
+            "(spring: (preset: snappy), target: (0.0, 0.0, 0.0), velocity: (inf, 0.0, 0.0))",
+            "velocity",
+        ),
+        (
+            "(spring: (preset: snappy), target: (0.0, 0.0, 0.0), rest: (offset: -1.0, speed: 1.0))",
+            "rest offset",
+        ),
+        (
+            "(spring: (preset: snappy), targt: (0.0, 0.0, 0.0))",
+            "targt",
+        ),
+        ("(target: (0.0, 0.0, 0.0))", "spring"),
+    ];
+    for (text, needle) in cases {
+        let error = ron::from_str::<TranslationSpring>(text)
+            .expect_err(text)
+            .to_string();
+        assert!(error.contains(needle), "{text}: {error}");
+    }
+}
