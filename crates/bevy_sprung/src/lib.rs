@@ -72,6 +72,11 @@ pub mod ui;
 pub mod visibility;
 
 pub use plugin::SpringPlugin;
+
+// The README's examples are compiled and run as doc tests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
 pub use sprung;
 
 /// What [`spring_property!`] expands to needs these, from this crate whatever the caller's

@@ -38,6 +38,7 @@
 //!   validated: a file cannot make an invalid spring), [`RestThreshold`] and [`Regime`].
 //! - `bevy_reflect`: `Reflect` for the value types, for Bevy components and inspectors.
 #![no_std]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 #[cfg(feature = "std")]
 extern crate std;
@@ -58,6 +59,11 @@ mod spring;
 mod transition;
 
 pub use error::{Parameter, SpringError};
+
+// The README's examples are compiled and run as doc tests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
 pub use rest::RestThreshold;
 pub use scalar::Scalar;
 pub use spring::{Regime, Spring};
