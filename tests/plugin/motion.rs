@@ -190,3 +190,33 @@ fn many_springs_match_one_spring_each() {
         );
     }
 }
+
+/// A slow spring far from its target moves by less than its offset's last digit each frame
+/// (here from 1e5 away with a half-life of 400 s at 240 fps): added to the offset, each step
+/// would round away and the spring would not start. It follows the exact motion from the first
+/// frame.
+#[test]
+fn a_slow_spring_far_from_its_target_follows_the_exact_motion() {
+    let spring = Spring::from_half_life(400.0).unwrap();
+    let mut app = app(240);
+    let target = Vec3::new(1e5, -300.0, 7.0);
+    let entity = spawn_translation(&mut app, spring, Vec3::ZERO, target);
+    app.update();
+    for frame in 1..=480 {
+        app.update();
+        let seconds = elapsed(&app);
+        let x = translation(&app, entity);
+        for axis in 0..3 {
+            let exact = exact(&spring, 0.0, target[axis], seconds).position;
+            assert!(
+                (f64::from(x[axis]) - exact).abs() <= 1e-6 * f64::from(target[axis].abs()),
+                "frame {frame} axis {axis}: {} vs {exact}",
+                x[axis]
+            );
+        }
+    }
+    assert!(
+        translation(&app, entity).x > 0.0,
+        "the spring never started"
+    );
+}

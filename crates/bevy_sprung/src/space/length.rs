@@ -3,7 +3,7 @@
 use bevy::math::Vec2;
 use bevy::ui::{Val, Val2};
 
-use super::{AffineSpace, SpringSpace};
+use super::{AffineSpace, Carried, SpringSpace};
 
 /// The number of a length in its own unit (pixels for `Px`, percent for `Percent`, …); 0 for
 /// `Auto`.
@@ -82,11 +82,19 @@ impl SpringSpace for Length {
     }
 
     #[inline]
-    fn retarget(old_target: Val, new_target: Val, offset: f32, velocity: f32) -> (f32, f32) {
+    fn retarget(
+        old_target: Val,
+        new_target: Val,
+        offset: Carried<f32>,
+        velocity: f32,
+    ) -> (Carried<f32>, f32) {
         if same_unit(old_target, new_target) {
-            (offset + (number(old_target) - number(new_target)), velocity)
+            (
+                offset.plus(number(old_target) - number(new_target)),
+                velocity,
+            )
         } else {
-            (0.0, velocity)
+            (Carried::new(0.0), velocity)
         }
     }
 
@@ -141,10 +149,35 @@ impl SpringSpace for Length2 {
     }
 
     #[inline]
-    fn retarget(old_target: Val2, new_target: Val2, offset: Vec2, velocity: Vec2) -> (Vec2, Vec2) {
-        let (x, vx) = Length::retarget(old_target.x, new_target.x, offset.x, velocity.x);
-        let (y, vy) = Length::retarget(old_target.y, new_target.y, offset.y, velocity.y);
-        (Vec2::new(x, y), Vec2::new(vx, vy))
+    fn retarget(
+        old_target: Val2,
+        new_target: Val2,
+        offset: Carried<Vec2>,
+        velocity: Vec2,
+    ) -> (Carried<Vec2>, Vec2) {
+        let axis = |offset: Carried<Vec2>, pick: fn(Vec2) -> f32| Carried {
+            offset: pick(offset.offset),
+            remainder: pick(offset.remainder),
+        };
+        let (x, vx) = Length::retarget(
+            old_target.x,
+            new_target.x,
+            axis(offset, |v| v.x),
+            velocity.x,
+        );
+        let (y, vy) = Length::retarget(
+            old_target.y,
+            new_target.y,
+            axis(offset, |v| v.y),
+            velocity.y,
+        );
+        (
+            Carried {
+                offset: Vec2::new(x.offset, y.offset),
+                remainder: Vec2::new(x.remainder, y.remainder),
+            },
+            Vec2::new(vx, vy),
+        )
     }
 
     const DEFAULT_REST: sprung::RestThreshold<f32> = LENGTH_REST;

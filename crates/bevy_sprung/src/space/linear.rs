@@ -2,7 +2,7 @@
 
 use core::marker::PhantomData;
 
-use super::{SpringSpace, SpringVector};
+use super::{Carried, SpringSpace, SpringVector};
 
 /// A value that is itself a vector: the offset is `value − target`. Positions, sizes, volumes,
 /// angles, anything a tween would lerp.
@@ -50,21 +50,11 @@ impl<V: SpringVector + Default> SpringSpace for Linear<V> {
         target + offset
     }
 
-    /// `carried` while `target + carried` is exactly what the property holds.
-    #[inline]
-    fn resume(current: V, target: V, carried: V) -> V {
-        if target + carried == current {
-            carried
-        } else {
-            current - target
-        }
-    }
-
     /// The offset from the new target is the old offset plus how far the target moved: no digit
     /// of the offset is lost to the value's rounding.
     #[inline]
-    fn retarget(old_target: V, new_target: V, offset: V, velocity: V) -> (V, V) {
-        (offset + (old_target - new_target), velocity)
+    fn retarget(old_target: V, new_target: V, offset: Carried<V>, velocity: V) -> (Carried<V>, V) {
+        (offset.plus(old_target - new_target), velocity)
     }
 }
 
@@ -117,17 +107,17 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
     }
 
     #[inline]
-    fn resume(current: Self::Value, target: Self::Value, carried: Self::Offset) -> Self::Offset {
-        S::resume(current, target, carried)
+    fn is_written(current: Self::Value, target: Self::Value, offset: Self::Offset) -> bool {
+        S::is_written(current, target, offset)
     }
 
     #[inline]
     fn retarget(
         old_target: Self::Value,
         new_target: Self::Value,
-        offset: Self::Offset,
+        offset: Carried<Self::Offset>,
         velocity: Self::Offset,
-    ) -> (Self::Offset, Self::Offset) {
+    ) -> (Carried<Self::Offset>, Self::Offset) {
         S::retarget(old_target, new_target, offset, velocity)
     }
 
@@ -135,11 +125,16 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
     fn constrain(
         target: Self::Value,
         before: Self::Offset,
-        after: Self::Offset,
+        after: Carried<Self::Offset>,
         velocity: Self::Offset,
-    ) -> (Self::Offset, Self::Offset) {
+    ) -> (Carried<Self::Offset>, Self::Offset) {
         let (after, velocity) = S::constrain(target, before, after, velocity);
-        SpringVector::stop_at_zero(S::coordinates(target), before, after, velocity)
+        let [offset, remainder, velocity] = SpringVector::stop_at_zero(
+            S::coordinates(target),
+            before,
+            [after.offset, after.remainder, velocity],
+        );
+        (Carried { offset, remainder }, velocity)
     }
 
     const DEFAULT_REST: sprung::RestThreshold<f32> = S::DEFAULT_REST;

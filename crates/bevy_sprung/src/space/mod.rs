@@ -24,6 +24,47 @@ pub use linear::{AffineSpace, Linear, NeverThroughZero};
 pub use rotation::{ShortestAngle, ShortestArc, rotation_vector};
 pub use vector::SpringVector;
 
+/// An offset carried between steps as an unevaluated sum `offset + remainder`, where the
+/// remainder holds what rounding dropped from `offset` (compensated summation).
+///
+/// A step adds a small increment to the offset. Far from the target, an increment below half a
+/// unit in the offset's last place (a slow spring's first frames, a high frame rate) would round
+/// away and the spring would not start; near it, the value itself cannot hold the offset. With
+/// the remainder neither happens: the offset moves exactly as the closed form says.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Carried<V> {
+    /// The offset, rounded.
+    pub offset: V,
+    /// What the exact offset adds to `offset`: below a unit in its last place.
+    pub remainder: V,
+}
+
+impl<V: SpringVector> Carried<V> {
+    /// An offset known exactly.
+    #[inline]
+    #[must_use]
+    pub fn new(offset: V) -> Self {
+        Self {
+            offset,
+            remainder: V::ZERO,
+        }
+    }
+
+    /// The offset plus `increment`: Dekker's Fast2Sum keeps in the remainder what the rounded
+    /// sum drops (exact while the offset is at least as large as the increment, the case where
+    /// it matters; otherwise within a unit in the last place of the increment).
+    #[inline]
+    #[must_use]
+    pub fn plus(self, increment: V) -> Self {
+        let increment = increment + self.remainder;
+        let offset = self.offset + increment;
+        Self {
+            offset,
+            remainder: increment - (offset - self.offset),
+        }
+    }
+}
+
 use core::fmt::Debug;
 
 use bevy::reflect::{FromReflect, Reflectable};
@@ -82,48 +123,43 @@ pub trait SpringSpace: Send + Sync + 'static {
     #[must_use]
     fn at_offset(target: Self::Value, offset: Self::Offset) -> Self::Value;
 
-    /// The offset to continue from when the property holds `current` and the spring carried
-    /// `carried` from its last step: `carried` if `current` is what the spring wrote (the value
-    /// then holds fewer digits than the offset: keeping them is what makes springs arrive),
-    /// otherwise the offset of `current`, which something else wrote.
+    /// Whether the property holds what the spring wrote for `offset` from `target`: then the
+    /// spring goes on from its own, carried offset (the value holds fewer digits than the
+    /// offset; keeping them is what makes springs arrive); otherwise something else wrote
+    /// `current`, and the spring starts over from [`offset`](Self::offset)`(current, target)`.
     #[inline]
     #[must_use]
-    fn resume(current: Self::Value, target: Self::Value, carried: Self::Offset) -> Self::Offset {
-        if Self::at_offset(target, carried) == current {
-            carried
-        } else {
-            Self::offset(current, target)
-        }
+    fn is_written(current: Self::Value, target: Self::Value, offset: Self::Offset) -> bool {
+        Self::at_offset(target, offset) == current
     }
 
-    /// The offset and velocity after the target moved from `old_target` to `new_target`. The
-    /// default keeps the value where it is and the velocity as it is; a rotation re-expresses
-    /// the velocity so that the angular velocity in the world is kept.
+    /// The offset after the target moved from `old_target` to `new_target`, as a sum
+    /// `(offset, remainder)` (see [`Carried`]), and the velocity. The default keeps the value
+    /// where it is and the velocity as it is; a rotation re-expresses the velocity so that the
+    /// angular velocity in the world is kept; a vector keeps every digit of its offset.
     #[inline]
     #[must_use]
     fn retarget(
         old_target: Self::Value,
         new_target: Self::Value,
-        offset: Self::Offset,
+        offset: Carried<Self::Offset>,
         velocity: Self::Offset,
-    ) -> (Self::Offset, Self::Offset) {
-        (
-            Self::offset(Self::at_offset(old_target, offset), new_target),
-            velocity,
-        )
+    ) -> (Carried<Self::Offset>, Self::Offset) {
+        let value = Self::at_offset(old_target, offset.offset);
+        (Carried::new(Self::offset(value, new_target)), velocity)
     }
 
-    /// Keeps a step's result in range: `before` and `after` are the offsets at the start and the
-    /// end of the step toward `target`, `velocity` the velocity at the end. The default changes
+    /// Keeps a step's result in range: `before` is the offset at the start of the step toward
+    /// `target`, `after` the offset and `velocity` the velocity at its end. The default changes
     /// nothing; [`NeverThroughZero`] stops a value at zero.
     #[inline]
     #[must_use]
     fn constrain(
         target: Self::Value,
         before: Self::Offset,
-        after: Self::Offset,
+        after: Carried<Self::Offset>,
         velocity: Self::Offset,
-    ) -> (Self::Offset, Self::Offset) {
+    ) -> (Carried<Self::Offset>, Self::Offset) {
         let _ = (target, before);
         (after, velocity)
     }

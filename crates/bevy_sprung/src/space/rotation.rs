@@ -2,7 +2,7 @@
 
 use bevy::math::{Quat, Rot2, Vec3};
 
-use super::SpringSpace;
+use super::{Carried, SpringSpace};
 
 /// A 3D rotation (`Quat`), sprung on the rotation vector of the shortest arc from the target,
 /// with an angular velocity in rad/s.
@@ -40,10 +40,15 @@ impl SpringSpace for ShortestArc {
     /// The velocity is re-expressed in the new target's frame, so that the angular velocity in
     /// the world is kept.
     #[inline]
-    fn retarget(old_target: Quat, new_target: Quat, offset: Vec3, velocity: Vec3) -> (Vec3, Vec3) {
-        let rotation = Self::at_offset(old_target, offset);
+    fn retarget(
+        old_target: Quat,
+        new_target: Quat,
+        offset: Carried<Vec3>,
+        velocity: Vec3,
+    ) -> (Carried<Vec3>, Vec3) {
+        let rotation = Self::at_offset(old_target, offset.offset);
         (
-            Self::offset(rotation, new_target),
+            Carried::new(Self::offset(rotation, new_target)),
             (new_target.inverse() * old_target) * velocity,
         )
     }

@@ -28,28 +28,29 @@ pub trait SpringVector:
     /// Per component `i`, with `c = coordinates`: where `c + before` and `c + after` lie on
     /// opposite sides of zero, and `c` lies on the side of `c + before` (an overshoot carrying
     /// the value away from its target across zero), `after` becomes `−c` (the value exactly 0)
-    /// and that component of `velocity` 0. See [`NeverThroughZero`](super::NeverThroughZero).
+    /// and that component of `remainder` and `velocity` 0. See
+    /// [`NeverThroughZero`](super::NeverThroughZero).
     #[must_use]
-    fn stop_at_zero(coordinates: Self, before: Self, after: Self, velocity: Self) -> (Self, Self);
+    fn stop_at_zero(coordinates: Self, before: Self, after: [Self; 3]) -> [Self; 3];
 }
 
-/// [`SpringVector::stop_at_zero`] on arrays.
+/// [`SpringVector::stop_at_zero`] on arrays: `[after, remainder, velocity]`.
 #[inline]
 fn stop_at_zero<const N: usize>(
     coordinates: [f32; N],
     before: [f32; N],
-    mut after: [f32; N],
-    mut velocity: [f32; N],
-) -> ([f32; N], [f32; N]) {
+    [mut after, mut remainder, mut velocity]: [[f32; N]; 3],
+) -> [[f32; N]; 3] {
     for i in 0..N {
         let target = coordinates[i];
         let (was, is) = (target + before[i], target + after[i]);
         if (was >= 0.0 && is < 0.0 && target >= 0.0) || (was <= 0.0 && is > 0.0 && target <= 0.0) {
             after[i] = -target;
+            remainder[i] = 0.0;
             velocity[i] = 0.0;
         }
     }
-    (after, velocity)
+    [after, remainder, velocity]
 }
 
 /// A component into `[−MAX, MAX]`, NaN to 0.
@@ -79,9 +80,8 @@ impl SpringVector for f32 {
     }
 
     #[inline]
-    fn stop_at_zero(coordinates: f32, before: f32, after: f32, velocity: f32) -> (f32, f32) {
-        let ([after], [velocity]) = stop_at_zero([coordinates], [before], [after], [velocity]);
-        (after, velocity)
+    fn stop_at_zero(coordinates: f32, before: f32, after: [f32; 3]) -> [f32; 3] {
+        stop_at_zero([coordinates], [before], after.map(|x| [x])).map(|[x]| x)
     }
 }
 
@@ -104,14 +104,13 @@ macro_rules! glam_vector {
             }
 
             #[inline]
-            fn stop_at_zero(coordinates: Self, before: Self, after: Self, velocity: Self) -> (Self, Self) {
-                let (after, velocity) = stop_at_zero(
+            fn stop_at_zero(coordinates: Self, before: Self, after: [Self; 3]) -> [Self; 3] {
+                stop_at_zero(
                     coordinates.to_array(),
                     before.to_array(),
-                    after.to_array(),
-                    velocity.to_array(),
-                );
-                (<$t>::from_array(after), <$t>::from_array(velocity))
+                    after.map(|v| v.to_array()),
+                )
+                .map(<$t>::from_array)
             }
         }
     )*};

@@ -16,7 +16,7 @@ use sprung::{RestThreshold, Spring};
 
 use crate::clock::SpringClock;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
-use crate::space::{SpringSpace, SpringVector};
+use crate::space::{Carried, SpringSpace, SpringVector};
 
 /// Moves the property `P` of its entity toward a target with an exact damped spring.
 ///
@@ -82,8 +82,8 @@ struct Motion<P: SpringProperty> {
     /// since (a retarget), and a hidden spring catches up under this one first.
     active_target: ValueOf<P>,
     /// The offset of the value from `active_target` after the last step, with the digits the
-    /// value itself cannot hold.
-    offset: OffsetOf<P>,
+    /// value itself cannot hold, and those the offset cannot.
+    offset: Carried<OffsetOf<P>>,
     /// Time not yet simulated while hidden, in seconds.
     pending: f32,
     /// The last parameters that made a valid spring (restored if reflection breaks them).
@@ -100,7 +100,7 @@ impl<P: SpringProperty> Motion<P> {
     fn new(target: ValueOf<P>, spring: Spring<f32>) -> Self {
         Self {
             active_target: target,
-            offset: OffsetOf::<P>::ZERO,
+            offset: Carried::new(OffsetOf::<P>::ZERO),
             pending: 0.0,
             last_valid: spring,
         }

@@ -9,7 +9,7 @@ use sprung::{RestThreshold, Spring, SpringState, Transition};
 
 use super::PropertySpring;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
-use crate::space::{SpringSpace, SpringVector};
+use crate::space::{Carried, SpringSpace, SpringVector};
 use crate::spring::cache::TransitionCache;
 
 /// What one frame did to a spring.
@@ -29,19 +29,33 @@ const DOWN: f32 = 1.0 / 18_446_744_073_709_551_616.0;
 const UP: f32 = 18_446_744_073_709_551_616.0;
 
 /// The exact step of offset `y` and velocity `v` toward a constant target, in the increment form
-/// `(y, v) + D·(y, v)` (see [`Transition`]).
+/// `(y, v) + D·(y, v)` (see [`Transition`]), the offset's increment added with compensation.
 #[inline]
-fn increment_step<V: SpringVector>(transition: &Transition<f32>, y: V, v: V) -> (V, V) {
+fn increment_step<V: SpringVector>(
+    transition: &Transition<f32>,
+    y: Carried<V>,
+    v: V,
+) -> (Carried<V>, V) {
     let [[d00, d01], [d10, d11]] = transition.increment_matrix();
-    (y + (y * d00 + v * d01), v + (v * d11 + y * d10))
+    let offset = y.offset;
+    (y.plus(offset * d00 + v * d01), v + (v * d11 + offset * d10))
 }
 
 /// The exact step of offset `y` (from the target's end-of-step position) and velocity `v`
 /// toward a target moving at `rate`.
 #[inline]
-fn moving_step<V: SpringVector>(transition: &Transition<f32>, y: V, v: V, rate: V) -> (V, V) {
-    let next = transition.step_toward_moving(SpringState::new(y, v), V::ZERO, rate);
-    (next.position, next.velocity)
+fn moving_step<V: SpringVector>(
+    transition: &Transition<f32>,
+    y: Carried<V>,
+    v: V,
+    rate: V,
+) -> (Carried<V>, V) {
+    let next = transition.step_toward_moving(SpringState::new(y.offset, v), V::ZERO, rate);
+    // The core step carries its own remainder; fold ours in.
+    (
+        y.plus(next.position - y.offset).plus(next.remainder()),
+        next.velocity,
+    )
 }
 
 /// Whether a squared length is within `tolerance`, compared in `f64` (where the square neither
@@ -76,11 +90,17 @@ impl<P: SpringProperty> PropertySpring<P> {
             && let Some(transition) = cache.get(&self.spring, dt)
         {
             let target = self.target;
-            let before = P::Space::resume(current, target, self.motion.offset);
+            let carried = self.motion.offset;
+            let before = if P::Space::is_written(current, target, carried.offset) {
+                carried
+            } else {
+                Carried::new(P::Space::offset(current, target))
+            };
             let (after, velocity) = increment_step(transition, before, self.velocity);
-            let (after, velocity) = P::Space::constrain(target, before, after, velocity);
+            let (after, velocity) = P::Space::constrain(target, before.offset, after, velocity);
             // A finite squared length means finite components; the rest test reuses both.
-            let (offset_squared, speed_squared) = (after.norm_squared(), velocity.norm_squared());
+            let (offset_squared, speed_squared) =
+                (after.offset.norm_squared(), velocity.norm_squared());
             if offset_squared.is_finite() && speed_squared.is_finite() {
                 return self.finish(
                     component,
@@ -114,14 +134,19 @@ impl<P: SpringProperty> PropertySpring<P> {
         let active = self.motion.active_target;
         // A property something made invalid (a NaN written into a `Transform`) is overwritten
         // from the spring's own state.
-        let mut offset = if P::Space::is_valid(current) {
-            P::Space::resume(current, active, self.motion.offset)
+        let carried = self.motion.offset;
+        let mut offset = if !P::Space::is_valid(current)
+            || P::Space::is_written(current, active, carried.offset)
+        {
+            carried
         } else {
+            Carried::new(P::Space::offset(current, active))
+        };
+        if !P::Space::is_valid(current) {
             warn_once!(
                 "bevy_sprung: a sprung property is not finite ({current:?}); the spring restores it"
             );
-            self.motion.offset
-        };
+        }
         let mut velocity = self.velocity;
         // Catch up the hidden time under the target that was in effect, then retarget.
         if self.motion.pending > 0.0 {
@@ -135,7 +160,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         if dt > 0.0 {
             (offset, velocity) = self.advance(cache, target, (offset, velocity), dt);
         }
-        let squared = (offset.norm_squared(), velocity.norm_squared());
+        let squared = (offset.offset.norm_squared(), velocity.norm_squared());
         self.finish(component, current, (offset, velocity), squared)
     }
 
@@ -159,7 +184,7 @@ impl<P: SpringProperty> PropertySpring<P> {
             };
             if !P::Space::is_valid(active) {
                 self.motion.active_target = self.target;
-                self.motion.offset = OffsetOf::<P>::ZERO;
+                self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
             }
         }
         if !self.velocity.is_finite() {
@@ -172,8 +197,8 @@ impl<P: SpringProperty> PropertySpring<P> {
             );
             self.target_velocity = OffsetOf::<P>::ZERO;
         }
-        if !self.motion.offset.is_finite() {
-            self.motion.offset = OffsetOf::<P>::ZERO;
+        if !(self.motion.offset.offset.is_finite() && self.motion.offset.remainder.is_finite()) {
+            self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
         }
         let spring = self.spring;
         if Spring::new(spring.mass(), spring.stiffness(), spring.damping()).is_ok() {
@@ -195,32 +220,36 @@ impl<P: SpringProperty> PropertySpring<P> {
         &self,
         cache: &mut TransitionCache,
         target: ValueOf<P>,
-        (offset, velocity): (OffsetOf<P>, OffsetOf<P>),
+        (offset, velocity): (Carried<OffsetOf<P>>, OffsetOf<P>),
         dt: f32,
-    ) -> (OffsetOf<P>, OffsetOf<P>) {
+    ) -> (Carried<OffsetOf<P>>, OffsetOf<P>) {
         let Some(transition) = cache.get(&self.spring, dt) else {
             // Unreachable: `repair` made the parameters valid.
             return (offset, velocity);
         };
         let rate = self.target_velocity;
-        let step = |y, v, r| {
+        let step = |y: Carried<OffsetOf<P>>, v, r| {
             let (after, v) = if r == OffsetOf::<P>::ZERO {
                 increment_step(transition, y, v)
             } else {
                 moving_step(transition, y, v, r)
             };
-            P::Space::constrain(target, y, after, v)
+            P::Space::constrain(target, y.offset, after, v)
         };
         let (after, next_velocity) = step(offset, velocity, rate);
-        if after.is_finite() && next_velocity.is_finite() {
+        if after.offset.is_finite() && after.remainder.is_finite() && next_velocity.is_finite() {
             return (after, next_velocity);
         }
         warn_once!(
             "bevy_sprung: a spring step overflowed f32; the state is held at the largest finite \
              values"
         );
-        let (after, next_velocity) = step(offset * DOWN, velocity * DOWN, rate * DOWN);
-        ((after * UP).saturate(), (next_velocity * UP).saturate())
+        let scaled = Carried::new(offset.offset * DOWN);
+        let (after, next_velocity) = step(scaled, velocity * DOWN, rate * DOWN);
+        (
+            Carried::new((after.offset * UP).saturate()),
+            (next_velocity * UP).saturate(),
+        )
     }
 
     /// The end of a step to `(offset, velocity)` with squared lengths `squared`: at rest (toward
@@ -231,7 +260,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         &mut self,
         component: &mut C,
         current: ValueOf<P>,
-        (offset, velocity): (OffsetOf<P>, OffsetOf<P>),
+        (offset, velocity): (Carried<OffsetOf<P>>, OffsetOf<P>),
         (offset_squared, speed_squared): (f32, f32),
     ) -> Stepped {
         let target = self.target;
@@ -242,10 +271,10 @@ impl<P: SpringProperty> PropertySpring<P> {
             && within(speed_squared, rest.speed)
         {
             // Snapping is what makes sleeping exact: nothing moves until the target changes.
-            (target, zero, zero, Stepped::Settled)
+            (target, Carried::new(zero), zero, Stepped::Settled)
         } else {
             (
-                P::Space::at_offset(target, offset),
+                P::Space::at_offset(target, offset.offset),
                 offset,
                 velocity,
                 Stepped::Moving,

@@ -1,0 +1,168 @@
+//! Instructions per spring per frame, counted by `valgrind --tool=callgrind`: repeatable figures
+//! on a shared, noisy machine (the count does not depend on what else runs).
+//!
+//! `cargo bench -p bevy_sprung --bench instructions` builds the scenes of `scenarios/mod.rs`,
+//! runs each under callgrind with collection only inside [`measured`] (a few frames of the
+//! animation's schedule, after warm-up frames), and prints instructions per entity per frame
+//! with the ratios the performance goals are stated in. It needs `valgrind` on the `PATH`.
+//! `… --bench instructions -- one METHOD COUNT FRAMES VARY` runs one scene without callgrind
+//! (what the driver runs under it).
+
+#[path = "scenarios/mod.rs"]
+mod scenarios;
+
+use std::process::Command;
+
+use bevy::prelude::*;
+use scenarios::{FRAME, Method, varying_dt};
+
+/// Entities per scene.
+const COUNT: usize = 100_000;
+/// Frames counted per scene.
+const FRAMES: u64 = 4;
+
+/// Every scene the driver counts, and whether its `dt` varies.
+fn scenes() -> Vec<(Method, bool)> {
+    vec![
+        (Method::Euler, false),
+        (Method::BareExact, false),
+        (Method::Springs { springs: 1 }, false),
+        (Method::EulerUiScale, false),
+        (Method::UiScaleSprings, false),
+        (Method::Springs { springs: 1 }, true),
+        (Method::Springs { springs: 8 }, true),
+        (Method::Springs { springs: 0 }, true),
+        (Method::SpringDamper { springs: 1 }, true),
+        (Method::SpringDamper { springs: 8 }, true),
+        (Method::SpringDamper { springs: 0 }, true),
+        (Method::SpringsAtRest, false),
+    ]
+}
+
+fn method_named(name: &str) -> Method {
+    scenes()
+        .into_iter()
+        .map(|(method, _)| method)
+        .find(|method| method.name() == name)
+        .unwrap_or_else(|| panic!("no scene {name}"))
+}
+
+/// The frames callgrind counts.
+#[inline(never)]
+fn measured(app: &mut App, method: Method, frames: u64, vary: bool) {
+    let schedule = method.schedule();
+    for frame in 0..frames {
+        let world = app.world_mut();
+        Method::set_dt(world, if vary { varying_dt(frame) } else { FRAME });
+        world.run_schedule(schedule);
+    }
+}
+
+/// One scene, as callgrind runs it.
+fn one(method: Method, count: usize, frames: u64, vary: bool) {
+    let mut app = method.app(count, false);
+    // Warm-up: the first frames fill caches and allocate.
+    measured_warm_up(&mut app, method, vary);
+    measured(&mut app, method, frames, vary);
+    let world = app.world_mut();
+    let since = world.increment_change_tick();
+    Method::set_dt(world, FRAME);
+    world.run_schedule(method.schedule());
+    method.check(world, count, since);
+}
+
+#[inline(never)]
+fn measured_warm_up(app: &mut App, method: Method, vary: bool) {
+    let schedule = method.schedule();
+    for frame in 100..102 {
+        let world = app.world_mut();
+        Method::set_dt(world, if vary { varying_dt(frame) } else { FRAME });
+        world.run_schedule(schedule);
+    }
+}
+
+/// Runs one scene under callgrind and returns the instructions counted in [`measured`].
+fn count(method: Method, vary: bool) -> u64 {
+    let exe = std::env::current_exe().expect("the bench binary");
+    let out = std::env::temp_dir().join(format!("callgrind.sprung.{}.{vary}", method.name()));
+    let status = Command::new("valgrind")
+        .arg("--tool=callgrind")
+        .arg("--collect-atstart=no")
+        .arg("--toggle-collect=*instructions::measured")
+        .arg(format!("--callgrind-out-file={}", out.display()))
+        .arg(&exe)
+        .args([
+            "one",
+            &method.name(),
+            &COUNT.to_string(),
+            &FRAMES.to_string(),
+            &vary.to_string(),
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status()
+        .expect("valgrind runs (install it: apt-get install valgrind)");
+    assert!(status.success(), "callgrind failed for {}", method.name());
+    let text = std::fs::read_to_string(&out).expect("callgrind output");
+    let _removed = std::fs::remove_file(&out);
+    text.lines()
+        .find_map(|line| line.strip_prefix("summary: "))
+        .and_then(|total| total.trim().parse().ok())
+        .expect("a summary line")
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("one") {
+        let method = method_named(&args[1]);
+        one(
+            method,
+            args[2].parse().expect("a count"),
+            args[3].parse().expect("a frame count"),
+            args[4].parse().expect("true or false"),
+        );
+        return;
+    }
+    #[expect(clippy::cast_precision_loss, reason = "counts for a report")]
+    let per_spring = |total: u64| total as f64 / (COUNT as f64 * FRAMES as f64);
+    let mut results = Vec::new();
+    println!("instructions per entity per frame ({COUNT} entities, {FRAMES} frames counted)");
+    for (method, vary) in scenes() {
+        let value = per_spring(count(method, vary));
+        let dt = if vary { "dt varies" } else { "dt fixed" };
+        println!("{:<28} {dt:<10} {value:>8.1}", method.name());
+        results.push(((method, vary), value));
+    }
+    let get = |method: Method, vary: bool| {
+        results
+            .iter()
+            .find(|(scene, _)| *scene == (method, vary))
+            .map(|(_, value)| *value)
+            .expect("counted")
+    };
+    let shared = Method::Springs { springs: 1 };
+    println!("\nratios (instructions):");
+    println!(
+        "  translation, shared spring / Euler:          {:.2}",
+        get(shared, false) / get(Method::Euler, false)
+    );
+    println!(
+        "  UI scale / Euler on the UI scale:            {:.2}",
+        get(Method::UiScaleSprings, false) / get(Method::EulerUiScale, false)
+    );
+    for springs in [1, 8, 0] {
+        println!(
+            "  {:<18} / spring_damper (dt varies):  {:.2}",
+            Method::Springs { springs }.name(),
+            get(Method::Springs { springs }, true) / get(Method::SpringDamper { springs }, true)
+        );
+    }
+    println!(
+        "  per entity / shared (dt varies):             {:.2}",
+        get(Method::Springs { springs: 0 }, true) / get(shared, true)
+    );
+    println!(
+        "  at rest / active:                            {:.3}",
+        get(Method::SpringsAtRest, false) / get(shared, false)
+    );
+}
