@@ -23,13 +23,18 @@ use bevy::prelude::*;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use scenarios::{FRAME, Method, varying_dt};
 
-/// Entities per scene.
-const COUNT: usize = 100_000;
+/// Entities per scene (`SPRUNG_BENCH_COUNT` overrides it, for looking at cache effects).
+fn count() -> usize {
+    std::env::var("SPRUNG_BENCH_COUNT")
+        .ok()
+        .and_then(|count| count.parse().ok())
+        .unwrap_or(100_000)
+}
 
 /// Measures one frame of each method's schedule in `group`, with a fixed or a varying `dt`.
 fn schedule_group(c: &mut Criterion, group: &str, methods: &[Method], vary: bool) {
     let mut group = c.benchmark_group(group);
-    group.throughput(Throughput::Elements(COUNT as u64));
+    group.throughput(Throughput::Elements(count() as u64));
     group.sample_size(30);
     for &method in methods {
         // Built on first use: criterion calls the routine once per sample, and not at all for
@@ -38,7 +43,7 @@ fn schedule_group(c: &mut Criterion, group: &str, methods: &[Method], vary: bool
         let schedule = method.schedule();
         let mut frame = 0_u64;
         group.bench_function(BenchmarkId::from_parameter(method.name()), |b| {
-            let app = app.get_or_insert_with(|| method.app(COUNT, false));
+            let app = app.get_or_insert_with(|| method.app(count(), false));
             b.iter(|| {
                 let world = app.world_mut();
                 frame += 1;
@@ -51,7 +56,7 @@ fn schedule_group(c: &mut Criterion, group: &str, methods: &[Method], vary: bool
             let since = world.increment_change_tick();
             Method::set_dt(world, FRAME);
             world.run_schedule(schedule);
-            method.check(world, COUNT, since);
+            method.check(world, count(), since);
         }
     }
     group.finish();

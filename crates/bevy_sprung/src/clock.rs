@@ -42,33 +42,34 @@ pub(crate) struct SpringTime<'w> {
     default: Res<'w, DefaultSpringClock>,
 }
 
-/// This frame's time steps, read once per system run.
+/// This frame's time steps, read once per system run: by clock, and for springs that use the
+/// default one.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct FrameSteps {
-    game: f32,
-    real: f32,
-    default: SpringClock,
-}
+pub(crate) struct FrameSteps([f32; 3]);
 
 impl SpringTime<'_> {
     /// The time steps of this frame.
     pub(crate) fn steps(&self) -> FrameSteps {
-        FrameSteps {
-            game: self.time.delta_secs(),
-            real: self.real.delta_secs(),
-            default: self.default.0,
-        }
+        let (game, real) = (self.time.delta_secs(), self.real.delta_secs());
+        let default = match self.default.0 {
+            SpringClock::Game => game,
+            SpringClock::Real => real,
+        };
+        FrameSteps([game, real, default])
     }
 }
 
 impl FrameSteps {
-    /// The step of `clock`, or of the default clock for `None`.
+    /// The step of `clock`, or of the default clock for `None`: a table lookup (the option's
+    /// three states are the table's indices).
     #[inline]
     pub(crate) fn dt(self, clock: Option<SpringClock>) -> f32 {
-        match clock.unwrap_or(self.default) {
-            SpringClock::Game => self.game,
-            SpringClock::Real => self.real,
-        }
+        let index = match clock {
+            Some(SpringClock::Game) => 0,
+            Some(SpringClock::Real) => 1,
+            None => 2,
+        };
+        self.0[index]
     }
 }
 

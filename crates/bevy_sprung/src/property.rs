@@ -35,8 +35,12 @@ pub trait SpringProperty: TypePath + Send + Sync + 'static {
 /// The value type of property `P` (what its target is).
 pub type ValueOf<P> = <<P as SpringProperty>::Space as SpringSpace>::Value;
 
-/// The offset and velocity type of property `P`.
+/// The offset type of property `P` (what the step computes with).
 pub type OffsetOf<P> = <<P as SpringProperty>::Space as SpringSpace>::Offset;
+
+/// The velocity type of property `P`, as its spring's getters return it (`Vec3` for a `Vec3`
+/// value).
+pub type VelocityOf<P> = <<P as SpringProperty>::Space as SpringSpace>::Velocity;
 
 /// Declares that a field of a component springs: defines a marker type naming the property and
 /// implements [`SpringProperty`] for it, in one line — the spring-side counterpart of Bevy's

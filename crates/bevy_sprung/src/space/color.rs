@@ -25,6 +25,7 @@ fn oklab(color: Color) -> Vec4 {
 impl SpringSpace for OklabColor {
     type Value = Color;
     type Offset = Vec4;
+    type Velocity = Vec4;
 
     #[inline]
     fn is_valid(value: Color) -> bool {

@@ -60,6 +60,7 @@ pub struct Length;
 impl SpringSpace for Length {
     type Value = Val;
     type Offset = f32;
+    type Velocity = f32;
 
     #[inline]
     fn is_valid(value: Val) -> bool {
@@ -79,6 +80,20 @@ impl SpringSpace for Length {
     #[inline]
     fn at_offset(target: Val, offset: f32) -> Val {
         in_unit_of(target, number(target) + offset)
+    }
+
+    #[inline]
+    fn carried_offset(value: Val, target: Val) -> Carried<f32> {
+        if same_unit(value, target) {
+            Carried::difference(number(value), number(target))
+        } else {
+            Carried::new(0.0)
+        }
+    }
+
+    #[inline]
+    fn at_carried(target: Val, offset: Carried<f32>) -> Val {
+        in_unit_of(target, (number(target) + offset.offset) + offset.remainder)
     }
 
     #[inline]
@@ -121,6 +136,7 @@ pub struct Length2;
 impl SpringSpace for Length2 {
     type Value = Val2;
     type Offset = Vec2;
+    type Velocity = Vec2;
 
     #[inline]
     fn is_valid(value: Val2) -> bool {
@@ -145,6 +161,30 @@ impl SpringSpace for Length2 {
         Val2::new(
             Length::at_offset(target.x, offset.x),
             Length::at_offset(target.y, offset.y),
+        )
+    }
+
+    #[inline]
+    fn carried_offset(value: Val2, target: Val2) -> Carried<Vec2> {
+        let (x, y) = (
+            Length::carried_offset(value.x, target.x),
+            Length::carried_offset(value.y, target.y),
+        );
+        Carried {
+            offset: Vec2::new(x.offset, y.offset),
+            remainder: Vec2::new(x.remainder, y.remainder),
+        }
+    }
+
+    #[inline]
+    fn at_carried(target: Val2, offset: Carried<Vec2>) -> Val2 {
+        let axis = |pick: fn(Vec2) -> f32| Carried {
+            offset: pick(offset.offset),
+            remainder: pick(offset.remainder),
+        };
+        Val2::new(
+            Length::at_carried(target.x, axis(|v| v.x)),
+            Length::at_carried(target.y, axis(|v| v.y)),
         )
     }
 

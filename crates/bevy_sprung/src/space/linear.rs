@@ -2,6 +2,9 @@
 
 use core::marker::PhantomData;
 
+use bevy::math::{Vec3, Vec3A};
+use bevy::reflect::{FromReflect, Reflectable};
+
 use super::{Carried, SpringSpace, SpringVector};
 
 /// A value that is itself a vector: the offset is `value − target`. Positions, sizes, volumes,
@@ -26,35 +29,122 @@ use super::{Carried, SpringSpace, SpringVector};
 /// ```
 pub struct Linear<V>(PhantomData<fn() -> V>);
 
-impl<V: SpringVector + Default> SpringSpace for Linear<V> {
-    type Value = V;
+/// A value that is a vector, and the vector its offsets and velocities are kept in: the same
+/// type, or for `Vec3` the SIMD-aligned `Vec3A` (the step then moves all three components in
+/// one instruction each; the conversion is exact).
+pub trait LinearValue:
+    Copy
+    + PartialEq
+    + Default
+    + core::fmt::Debug
+    + Send
+    + Sync
+    + Reflectable
+    + FromReflect
+    + From<Self::Offset>
+    + Into<Self::Offset>
+{
+    /// The vector the offsets and velocities are kept in.
+    type Offset: SpringVector;
+
+    /// The value in the offset's type (exactly).
+    #[must_use]
+    fn to_offset(self) -> Self::Offset;
+
+    /// The value back from the offset's type (exactly).
+    #[must_use]
+    fn from_offset(offset: Self::Offset) -> Self;
+}
+
+impl<V: SpringVector + Default> LinearValue for V {
     type Offset = V;
 
     #[inline]
+    fn to_offset(self) -> V {
+        self
+    }
+
+    #[inline]
+    fn from_offset(offset: V) -> V {
+        offset
+    }
+}
+
+impl LinearValue for Vec3 {
+    type Offset = Vec3A;
+
+    #[inline]
+    fn to_offset(self) -> Vec3A {
+        Vec3A::from(self)
+    }
+
+    #[inline]
+    fn from_offset(offset: Vec3A) -> Vec3 {
+        Vec3::from(offset)
+    }
+}
+
+impl<V: LinearValue> SpringSpace for Linear<V> {
+    type Value = V;
+    type Offset = V::Offset;
+    type Velocity = V;
+
+    #[inline]
     fn is_valid(value: V) -> bool {
-        value.is_finite()
+        value.to_offset().is_finite()
     }
 
     #[inline]
     fn magnitude(value: V) -> f32 {
-        value.max_magnitude()
+        value.to_offset().max_magnitude()
     }
 
     #[inline]
-    fn offset(value: V, target: V) -> V {
-        value - target
+    fn offset(value: V, target: V) -> V::Offset {
+        value.to_offset() - target.to_offset()
     }
 
     #[inline]
-    fn at_offset(target: V, offset: V) -> V {
-        target + offset
+    fn at_offset(target: V, offset: V::Offset) -> V {
+        V::from_offset(target.to_offset() + offset)
+    }
+
+    #[inline]
+    fn carried_offset(value: V, target: V) -> Carried<V::Offset> {
+        Carried::difference(value.to_offset(), target.to_offset())
+    }
+
+    /// `(target + offset) + remainder`: exact where the value is far smaller than its target
+    /// (the first sum cancels exactly, Sterbenz) and the remainder holds its fine digits.
+    #[inline]
+    fn at_carried(target: V, offset: Carried<V::Offset>) -> V {
+        V::from_offset((target.to_offset() + offset.offset) + offset.remainder)
+    }
+
+    /// Compared in the offset's type: one vector comparison for a `Vec3`.
+    #[inline]
+    fn same(a: V, b: V) -> bool {
+        a.to_offset() == b.to_offset()
+    }
+
+    #[inline]
+    fn is_written(current: V, target: V, offset: Carried<V::Offset>) -> bool {
+        (target.to_offset() + offset.offset) + offset.remainder == current.to_offset()
     }
 
     /// The offset from the new target is the old offset plus how far the target moved: no digit
     /// of the offset is lost to the value's rounding.
     #[inline]
-    fn retarget(old_target: V, new_target: V, offset: Carried<V>, velocity: V) -> (Carried<V>, V) {
-        (offset.plus(old_target - new_target), velocity)
+    fn retarget(
+        old_target: V,
+        new_target: V,
+        offset: Carried<V::Offset>,
+        velocity: V::Offset,
+    ) -> (Carried<V::Offset>, V::Offset) {
+        (
+            offset.plus(old_target.to_offset() - new_target.to_offset()),
+            velocity,
+        )
     }
 }
 
@@ -66,10 +156,10 @@ pub trait AffineSpace: SpringSpace {
     fn coordinates(value: Self::Value) -> Self::Offset;
 }
 
-impl<V: SpringVector + Default> AffineSpace for Linear<V> {
+impl<V: LinearValue> AffineSpace for Linear<V> {
     #[inline]
-    fn coordinates(value: V) -> V {
-        value
+    fn coordinates(value: V) -> V::Offset {
+        value.to_offset()
     }
 }
 
@@ -85,6 +175,7 @@ pub struct NeverThroughZero<S>(PhantomData<fn() -> S>);
 impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
     type Value = S::Value;
     type Offset = S::Offset;
+    type Velocity = S::Velocity;
 
     #[inline]
     fn is_valid(value: Self::Value) -> bool {
@@ -107,7 +198,21 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
     }
 
     #[inline]
-    fn is_written(current: Self::Value, target: Self::Value, offset: Self::Offset) -> bool {
+    fn carried_offset(value: Self::Value, target: Self::Value) -> Carried<Self::Offset> {
+        S::carried_offset(value, target)
+    }
+
+    #[inline]
+    fn at_carried(target: Self::Value, offset: Carried<Self::Offset>) -> Self::Value {
+        S::at_carried(target, offset)
+    }
+
+    #[inline]
+    fn is_written(
+        current: Self::Value,
+        target: Self::Value,
+        offset: Carried<Self::Offset>,
+    ) -> bool {
         S::is_written(current, target, offset)
     }
 

@@ -20,7 +20,7 @@ mod vector;
 pub use color::OklabColor;
 #[cfg(feature = "ui")]
 pub use length::{Length, Length2};
-pub use linear::{AffineSpace, Linear, NeverThroughZero};
+pub use linear::{AffineSpace, Linear, LinearValue, NeverThroughZero};
 pub use rotation::{ShortestAngle, ShortestArc, rotation_vector};
 pub use vector::SpringVector;
 
@@ -47,6 +47,21 @@ impl<V: SpringVector> Carried<V> {
         Self {
             offset,
             remainder: V::ZERO,
+        }
+    }
+
+    /// `a − b` exactly, as a rounded difference and its error (Knuth's TwoSum, which needs no
+    /// ordering of the magnitudes).
+    #[inline]
+    #[must_use]
+    pub fn difference(a: V, b: V) -> Self {
+        let minus_b = -b;
+        let offset = a + minus_b;
+        let b_part = offset - a;
+        let a_part = offset - b_part;
+        Self {
+            offset,
+            remainder: (a - a_part) + (minus_b - b_part),
         }
     }
 
@@ -90,6 +105,7 @@ use bevy::reflect::{FromReflect, Reflectable};
 /// impl SpringSpace for UnitInterval {
 ///     type Value = f32;
 ///     type Offset = f32;
+///     type Velocity = f32;
 ///     fn is_valid(value: f32) -> bool { value.is_finite() }
 ///     fn magnitude(_: f32) -> f32 { 1.0 }
 ///     fn offset(value: f32, target: f32) -> f32 { value - target }
@@ -100,8 +116,12 @@ pub trait SpringSpace: Send + Sync + 'static {
     /// The value as the component stores it, and the type of the target (for a rotation, a
     /// `Quat`).
     type Value: Copy + PartialEq + Default + Debug + Send + Sync + Reflectable + FromReflect;
-    /// The space the offset from the target moves in (for a rotation, the rotation vector).
+    /// The space the offset from the target moves in (for a rotation, the rotation vector):
+    /// what the step computes with, a SIMD type where one helps (`Vec3A` for `Vec3` values).
     type Offset: SpringVector;
+    /// The type velocities and impulses are read in: usually the offset's, but the value's own
+    /// vector type where the offset is a SIMD stand-in for it (`Vec3`, not `Vec3A`).
+    type Velocity: Copy + PartialEq + core::fmt::Debug + From<Self::Offset> + Into<Self::Offset>;
 
     /// Whether `value` can be a target (finite, and for a rotation of non-zero length).
     #[must_use]
@@ -123,14 +143,45 @@ pub trait SpringSpace: Send + Sync + 'static {
     #[must_use]
     fn at_offset(target: Self::Value, offset: Self::Offset) -> Self::Value;
 
+    /// The offset of `value` from `target` as a carried sum (see [`Carried`]). The default
+    /// rounds [`offset`](Self::offset); a vector space keeps the exact difference, so that a
+    /// value far smaller than its target loses none of its digits to the offset.
+    #[inline]
+    #[must_use]
+    fn carried_offset(value: Self::Value, target: Self::Value) -> Carried<Self::Offset> {
+        Carried::new(Self::offset(value, target))
+    }
+
+    /// The value at the carried offset `offset` from `target`: what the spring writes. The
+    /// default is [`at_offset`](Self::at_offset) of the rounded offset; a vector space adds the
+    /// remainder too, so that a value far smaller than its target (a scale springing from 1
+    /// toward 700) keeps the digits its offset cannot hold.
+    #[inline]
+    #[must_use]
+    fn at_carried(target: Self::Value, offset: Carried<Self::Offset>) -> Self::Value {
+        Self::at_offset(target, offset.offset)
+    }
+
+    /// Whether two values are the same (a spring writes a value only if it is not the same as
+    /// the one the property holds). `==` unless the space knows a cheaper exact test.
+    #[inline]
+    #[must_use]
+    fn same(a: Self::Value, b: Self::Value) -> bool {
+        a == b
+    }
+
     /// Whether the property holds what the spring wrote for `offset` from `target`: then the
     /// spring goes on from its own, carried offset (the value holds fewer digits than the
     /// offset; keeping them is what makes springs arrive); otherwise something else wrote
     /// `current`, and the spring starts over from [`offset`](Self::offset)`(current, target)`.
     #[inline]
     #[must_use]
-    fn is_written(current: Self::Value, target: Self::Value, offset: Self::Offset) -> bool {
-        Self::at_offset(target, offset) == current
+    fn is_written(
+        current: Self::Value,
+        target: Self::Value,
+        offset: Carried<Self::Offset>,
+    ) -> bool {
+        Self::at_carried(target, offset) == current
     }
 
     /// The offset after the target moved from `old_target` to `new_target`, as a sum

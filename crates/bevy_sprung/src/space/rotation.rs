@@ -1,6 +1,6 @@
 //! Rotations, the short way round.
 
-use bevy::math::{Quat, Rot2, Vec3};
+use bevy::math::{Quat, Rot2, Vec3, Vec3A};
 
 use super::{Carried, SpringSpace};
 
@@ -15,7 +15,8 @@ pub struct ShortestArc;
 
 impl SpringSpace for ShortestArc {
     type Value = Quat;
-    type Offset = Vec3;
+    type Offset = Vec3A;
+    type Velocity = Vec3;
 
     #[inline]
     fn is_valid(value: Quat) -> bool {
@@ -28,13 +29,13 @@ impl SpringSpace for ShortestArc {
     }
 
     #[inline]
-    fn offset(value: Quat, target: Quat) -> Vec3 {
-        rotation_vector(target.inverse() * value)
+    fn offset(value: Quat, target: Quat) -> Vec3A {
+        rotation_vector(target.inverse() * value).into()
     }
 
     #[inline]
-    fn at_offset(target: Quat, offset: Vec3) -> Quat {
-        (target * Quat::from_scaled_axis(offset)).normalize()
+    fn at_offset(target: Quat, offset: Vec3A) -> Quat {
+        (target * Quat::from_scaled_axis(offset.into())).normalize()
     }
 
     /// The velocity is re-expressed in the new target's frame, so that the angular velocity in
@@ -43,9 +44,9 @@ impl SpringSpace for ShortestArc {
     fn retarget(
         old_target: Quat,
         new_target: Quat,
-        offset: Carried<Vec3>,
-        velocity: Vec3,
-    ) -> (Carried<Vec3>, Vec3) {
+        offset: Carried<Vec3A>,
+        velocity: Vec3A,
+    ) -> (Carried<Vec3A>, Vec3A) {
         let rotation = Self::at_offset(old_target, offset.offset);
         (
             Carried::new(Self::offset(rotation, new_target)),
@@ -93,6 +94,7 @@ pub struct ShortestAngle;
 impl SpringSpace for ShortestAngle {
     type Value = Rot2;
     type Offset = f32;
+    type Velocity = f32;
 
     #[inline]
     fn is_valid(value: Rot2) -> bool {

@@ -1,11 +1,12 @@
 //! The vectors offsets move in: Bevy's [`NormedVectorSpace`] over `f32`, plus the component-wise
 //! operations a spring needs to stay finite and in range.
 
-use bevy::math::{NormedVectorSpace, Vec2, Vec3, Vec3A, Vec4};
+use bevy::math::{NormedVectorSpace, Vec2, Vec3A, Vec4};
 use bevy::reflect::{FromReflect, Reflectable};
 
-/// A vector an offset and a velocity can be: `f32`, `Vec2`, `Vec3`, `Vec3A` or `Vec4`, or a type
-/// of your own with a norm.
+/// A vector an offset and a velocity can be: `f32`, `Vec2`, `Vec3A` or `Vec4`, or a type of your
+/// own with a norm. (A `Vec3` value springs with `Vec3A` offsets, see
+/// [`LinearValue`](super::LinearValue).)
 ///
 /// The spring arithmetic is [`NormedVectorSpace`]'s (`+`, `−`, scaling, the squared norm for the
 /// rest test); this adds what it leaves out and a spring needs component by component.
@@ -116,4 +117,4 @@ macro_rules! glam_vector {
     )*};
 }
 
-glam_vector!(Vec2, Vec3, Vec3A, Vec4);
+glam_vector!(Vec2, Vec3A, Vec4);

@@ -2,15 +2,18 @@
 
 use sprung::{Spring, Transition};
 
+/// The bits of `(mass, stiffness)` and of `(damping, dt)`: what makes a transition.
+type Key = (u64, u64);
+
 /// A few transitions keyed by spring parameters and time step, kept for one batch of entities.
 ///
 /// Entities usually share a handful of springs; each distinct `(spring, dt)` is computed once
 /// per batch instead of once per entity, so the per-entity cost is the step itself. The entry
-/// used last is checked first, with one 128-bit comparison: consecutive entities of a batch
+/// used last is checked first, with two 64-bit comparisons: consecutive entities of a batch
 /// mostly share their spring.
 pub(crate) struct TransitionCache {
-    /// The bits of `(mass, stiffness, damping, dt)` of each filled entry.
-    keys: [u128; Self::SIZE],
+    /// The key of each filled entry.
+    keys: [Key; Self::SIZE],
     transitions: [Transition<f32>; Self::SIZE],
     /// How many entries are filled.
     len: usize,
@@ -23,7 +26,7 @@ pub(crate) struct TransitionCache {
 impl Default for TransitionCache {
     fn default() -> Self {
         Self {
-            keys: [0; Self::SIZE],
+            keys: [(0, 0); Self::SIZE],
             transitions: [Transition::identity(); Self::SIZE],
             len: 0,
             next: 0,
@@ -39,10 +42,10 @@ impl TransitionCache {
     /// spring (possible through reflection, which bypasses `Spring::new`).
     #[inline]
     pub(crate) fn get(&mut self, spring: &Spring<f32>, dt: f32) -> Option<&Transition<f32>> {
-        let key = u128::from(spring.mass().to_bits())
-            | (u128::from(spring.stiffness().to_bits()) << 32)
-            | (u128::from(spring.damping().to_bits()) << 64)
-            | (u128::from(dt.to_bits()) << 96);
+        let key = (
+            u64::from(spring.mass().to_bits()) | (u64::from(spring.stiffness().to_bits()) << 32),
+            u64::from(spring.damping().to_bits()) | (u64::from(dt.to_bits()) << 32),
+        );
         if self.len > 0 && self.keys[self.last] == key {
             return Some(&self.transitions[self.last]);
         }
@@ -53,7 +56,7 @@ impl TransitionCache {
     /// and insert.
     #[cold]
     #[inline(never)]
-    fn lookup(&mut self, spring: &Spring<f32>, dt: f32, key: u128) -> Option<&Transition<f32>> {
+    fn lookup(&mut self, spring: &Spring<f32>, dt: f32, key: Key) -> Option<&Transition<f32>> {
         if let Some(index) = self.keys[..self.len]
             .iter()
             .position(|cached| *cached == key)

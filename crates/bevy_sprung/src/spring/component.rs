@@ -15,7 +15,7 @@ use bevy::prelude::*;
 use sprung::{RestThreshold, Spring};
 
 use crate::clock::SpringClock;
-use crate::property::{OffsetOf, SpringProperty, ValueOf};
+use crate::property::{OffsetOf, SpringProperty, ValueOf, VelocityOf};
 use crate::space::{Carried, SpringSpace, SpringVector};
 
 /// Moves the property `P` of its entity toward a target with an exact damped spring.
@@ -88,23 +88,64 @@ struct Motion<P: SpringProperty> {
     pending: f32,
     /// The last parameters that made a valid spring (restored if reflection breaks them).
     last_valid: Spring<f32>,
+    /// The rest tolerances `rest_squared` was computed from (a `rest` that differs, set through
+    /// reflection, sends the step the general way, which recomputes it).
+    rest_key: RestThreshold<f32>,
+    /// The squared offset and speed tolerances as applied at `active_target` (raised to what
+    /// `f32` resolves there): the rest test is two comparisons.
+    rest_squared: (f32, f32),
+    /// The time step `increments` is the transition of (NaN: none). While nothing but the
+    /// stepping system touches the spring and the frame's time step is this one, the step uses
+    /// `increments` without looking anything up.
+    step_dt: f32,
+    /// The increment matrix `D = M − I` over `step_dt`, row-major.
+    increments: [f32; 4],
 }
 
 impl<P: SpringProperty> Default for Motion<P> {
     fn default() -> Self {
-        Self::new(ValueOf::<P>::default(), Spring::default())
+        Self::new(ValueOf::<P>::default(), Spring::default(), P::DEFAULT_REST)
     }
 }
 
 impl<P: SpringProperty> Motion<P> {
-    fn new(target: ValueOf<P>, spring: Spring<f32>) -> Self {
+    fn new(target: ValueOf<P>, spring: Spring<f32>, rest: RestThreshold<f32>) -> Self {
         Self {
             active_target: target,
             offset: Carried::new(OffsetOf::<P>::ZERO),
             pending: 0.0,
             last_valid: spring,
+            rest_key: rest,
+            rest_squared: rest_squared::<P>(rest, target),
+            step_dt: f32::NAN,
+            increments: [0.0; 4],
         }
     }
+}
+
+/// The smallest tolerance the rest test applies: squared offsets and speeds are compared in
+/// `f32`, whose squares of values below this would underflow.
+const FINEST_REST: f32 = 1e-18;
+
+/// The squared tolerances of `rest` as applied toward `target`: raised to what `f32` resolves
+/// near the target ([`RestThreshold::at_magnitude`]) and to [`FINEST_REST`].
+fn rest_squared<P: SpringProperty>(rest: RestThreshold<f32>, target: ValueOf<P>) -> (f32, f32) {
+    let magnitude = P::Space::magnitude(target);
+    let applied = rest.at_magnitude(if magnitude.is_finite() {
+        magnitude
+    } else {
+        0.0
+    });
+    let square = |tolerance: f32| {
+        let tolerance = f64::from(tolerance.max(FINEST_REST));
+        #[expect(
+            clippy::cast_possible_truncation,
+            reason = "an f32 threshold; squares beyond f32::MAX become infinite (all at rest)"
+        )]
+        let squared = (tolerance * tolerance) as f32;
+        squared
+    };
+    (square(applied.offset), square(applied.speed))
 }
 
 impl<P: SpringProperty> Clone for Motion<P> {
@@ -172,14 +213,14 @@ impl<P: SpringProperty> PropertySpring<P> {
             target_velocity: OffsetOf::<P>::ZERO,
             rest: P::DEFAULT_REST,
             clock: None,
-            motion: Motion::new(target, spring),
+            motion: Motion::new(target, spring, P::DEFAULT_REST),
         }
     }
 
     /// The same spring with rest tolerances `rest` (in the property's units).
     #[must_use]
     pub fn with_rest(mut self, rest: RestThreshold<f32>) -> Self {
-        self.rest = rest;
+        self.set_rest(rest);
         self
     }
 
@@ -194,7 +235,7 @@ impl<P: SpringProperty> PropertySpring<P> {
 
     /// The same spring starting with `velocity` (refused with a warning if not finite).
     #[must_use]
-    pub fn with_velocity(mut self, velocity: OffsetOf<P>) -> Self {
+    pub fn with_velocity(mut self, velocity: impl Into<OffsetOf<P>>) -> Self {
         self.set_velocity(velocity);
         self
     }
@@ -249,14 +290,14 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// rotation vector relative to the target, in rad/s).
     #[inline]
     #[must_use]
-    pub fn velocity(&self) -> OffsetOf<P> {
-        self.velocity
+    pub fn velocity(&self) -> VelocityOf<P> {
+        self.velocity.into()
     }
 
     /// Sets the velocity; wakes the spring. A non-finite velocity is refused with one warning
     /// and nothing changes.
     #[inline]
-    pub fn set_velocity(&mut self, velocity: OffsetOf<P>) {
+    pub fn set_velocity(&mut self, velocity: impl Into<OffsetOf<P>>) {
         let _refused = self.try_set_velocity(velocity);
     }
 
@@ -264,8 +305,11 @@ impl<P: SpringProperty> PropertySpring<P> {
     ///
     /// # Errors
     /// [`SpringInputError::NonFiniteVelocity`] (also logged once); nothing changes.
-    pub fn try_set_velocity(&mut self, velocity: OffsetOf<P>) -> Result<(), SpringInputError> {
-        self.velocity = finite_velocity(velocity, "velocity")?;
+    pub fn try_set_velocity(
+        &mut self,
+        velocity: impl Into<OffsetOf<P>>,
+    ) -> Result<(), SpringInputError> {
+        self.velocity = finite_velocity(velocity.into(), "velocity")?;
         Ok(())
     }
 
@@ -273,7 +317,7 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// impulse, or one that would make the velocity infinite, is refused with one warning and
     /// nothing changes.
     #[inline]
-    pub fn add_impulse(&mut self, velocity_change: OffsetOf<P>) {
+    pub fn add_impulse(&mut self, velocity_change: impl Into<OffsetOf<P>>) {
         let _refused = self.try_add_impulse(velocity_change);
     }
 
@@ -283,9 +327,9 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// [`SpringInputError::NonFiniteVelocity`] (also logged once); nothing changes.
     pub fn try_add_impulse(
         &mut self,
-        velocity_change: OffsetOf<P>,
+        velocity_change: impl Into<OffsetOf<P>>,
     ) -> Result<(), SpringInputError> {
-        finite_velocity(velocity_change, "impulse")?;
+        let velocity_change = finite_velocity(velocity_change.into(), "impulse")?;
         self.velocity =
             finite_velocity(self.velocity + velocity_change, "velocity after an impulse")?;
         Ok(())
@@ -297,14 +341,14 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// jitter from uneven frame times. A spring following a moving target does not sleep.
     #[inline]
     #[must_use]
-    pub fn target_velocity(&self) -> OffsetOf<P> {
-        self.target_velocity
+    pub fn target_velocity(&self) -> VelocityOf<P> {
+        self.target_velocity.into()
     }
 
     /// Sets how fast the target moves (see [`target_velocity`](Self::target_velocity)). A
     /// non-finite velocity is refused with one warning and nothing changes.
     #[inline]
-    pub fn set_target_velocity(&mut self, velocity: OffsetOf<P>) {
+    pub fn set_target_velocity(&mut self, velocity: impl Into<OffsetOf<P>>) {
         let _refused = self.try_set_target_velocity(velocity);
     }
 
@@ -314,9 +358,9 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// [`SpringInputError::NonFiniteVelocity`] (also logged once); nothing changes.
     pub fn try_set_target_velocity(
         &mut self,
-        velocity: OffsetOf<P>,
+        velocity: impl Into<OffsetOf<P>>,
     ) -> Result<(), SpringInputError> {
-        self.target_velocity = finite_velocity(velocity, "target velocity")?;
+        self.target_velocity = finite_velocity(velocity.into(), "target velocity")?;
         Ok(())
     }
 
@@ -333,6 +377,8 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     pub fn set_rest(&mut self, rest: RestThreshold<f32>) {
         self.rest = rest;
+        self.motion.rest_key = rest;
+        self.motion.rest_squared = rest_squared::<P>(rest, self.motion.active_target);
     }
 
     /// The clock the spring advances with, if it overrides the default.
@@ -585,11 +631,11 @@ mod serde_impls {
                     *field = value;
                 }
             }
-            if let Given(Some(rest)) = read.rest {
-                spring.rest = rest;
-            }
             spring.clock = read.clock.0;
-            spring.motion = Motion::new(read.target, read.spring);
+            spring.motion = Motion::new(read.target, read.spring, spring.rest);
+            if let Given(Some(rest)) = read.rest {
+                spring.set_rest(rest);
+            }
             Ok(spring)
         }
     }

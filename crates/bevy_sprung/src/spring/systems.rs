@@ -9,50 +9,59 @@ use super::event::SpringSettled;
 use crate::clock::SpringTime;
 use crate::property::SpringProperty;
 
+/// Springs that never skip a frame: the common case, with nothing to fetch for visibility.
 #[cfg(feature = "visibility")]
-type Visibility = (
-    Option<&'static ViewVisibility>,
-    Has<crate::visibility::CatchUpWhenHidden>,
-);
+type Seen = Without<crate::visibility::CatchUpWhenHidden>;
 #[cfg(not(feature = "visibility"))]
-type Visibility = ();
-
-/// Whether a spring may skip this frame: it opted in and nobody saw it last frame.
-#[cfg(feature = "visibility")]
-#[inline]
-fn is_hidden((visibility, catch_up): (Option<&ViewVisibility>, bool)) -> bool {
-    catch_up && visibility.is_some_and(|visibility| !visibility.get())
-}
-
-#[cfg(not(feature = "visibility"))]
-#[inline]
-fn is_hidden((): ()) -> bool {
-    false
-}
+type Seen = ();
 
 /// Steps every awake spring on property `P`, in parallel, and puts the ones that settle to
 /// sleep (triggering [`SpringSettled<P>`]).
 pub(crate) fn step_springs<P: SpringProperty>(
     time: SpringTime,
     mut springs: Query<
+        (Entity, &mut PropertySpring<P>, &mut P::Component),
+        (Without<SpringAsleep<P>>, Seen),
+    >,
+    #[cfg(feature = "visibility")] mut catching_up: Query<
         (
             Entity,
             &mut PropertySpring<P>,
             &mut P::Component,
-            Visibility,
+            Option<&ViewVisibility>,
         ),
-        Without<SpringAsleep<P>>,
+        (
+            Without<SpringAsleep<P>>,
+            With<crate::visibility::CatchUpWhenHidden>,
+        ),
     >,
     commands: ParallelCommands,
 ) {
     let steps = time.steps();
-    // Boxed: the fold behind `for_each_init` moves its state through every item, and a pointer
-    // moves for free where the cache itself would be copied twice per entity.
-    springs.par_iter_mut().for_each_init(
+    let mut cache = TransitionCache::default();
+    for (entity, spring, mut component) in &mut springs {
+        // Changed since this system last ran: by something else than this system, which marks
+        // every spring it steps (a retarget, a kick, an edit through reflection).
+        let untouched = !spring.is_changed();
+        // The spring changes every frame it is stepped; the property only when it moves.
+        let spring = spring.into_inner();
+        let dt = steps.dt(spring.clock());
+        let frame = spring.step(P::get(&component), dt, false, untouched, &mut cache);
+        if let Some(value) = frame.write {
+            P::set(&mut component, value);
+        }
+        if frame.outcome == Stepped::Settled {
+            put_to_sleep::<P>(&commands, entity);
+        }
+    }
+    // Springs that may skip frames while nobody sees them (`ViewVisibility` lags a frame).
+    #[cfg(feature = "visibility")]
+    catching_up.par_iter_mut().for_each_init(
         Box::<TransitionCache>::default,
         |cache, (entity, mut spring, mut component, visibility)| {
             let dt = steps.dt(spring.clock());
-            if spring.step(&mut component, dt, is_hidden(visibility), cache) == Stepped::Settled {
+            let hidden = visibility.is_some_and(|visibility| !visibility.get());
+            if spring.step_on(&mut component, dt, hidden, cache) == Stepped::Settled {
                 put_to_sleep::<P>(&commands, entity);
             }
         },

@@ -69,7 +69,7 @@ fn settle<P: crate::property::SpringProperty>(
     )]
     let frames = (limit / dt).ceil() as u64;
     (1..=frames).find_map(|frame| {
-        let stepped = spring.step(&mut &mut *component, narrow(dt), false, &mut cache);
+        let stepped = spring.step_on(&mut &mut *component, narrow(dt), false, &mut cache);
         #[expect(clippy::cast_precision_loss, reason = "frame counts are small")]
         (stepped == Stepped::Settled).then_some(frame as f64 * dt)
     })
@@ -208,7 +208,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
                 x if x < 0.02 => narrow(0.5 * random.unit()),
                 _ => narrow(1.0 / (30.0 + 330.0 * random.unit())),
             };
-            let stepped = spring.step(&mut &mut transform, dt, false, &mut cache);
+            let stepped = spring.step_on(&mut &mut transform, dt, false, &mut cache);
             let step = exact.transition(f64::from(dt));
             for (state, target) in shadow.iter_mut().zip(target) {
                 *state = if stepped == Stepped::Settled {
@@ -240,7 +240,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
         let mut shadow_at_rest = None;
         for frame in 1_u32.. {
             let settled =
-                spring.step(&mut &mut transform, dt, false, &mut cache) == Stepped::Settled;
+                spring.step_on(&mut &mut transform, dt, false, &mut cache) == Stepped::Settled;
             for (axis, state) in shadow.iter_mut().enumerate() {
                 *state = step.step(*state, f64::from(target[axis]));
             }
