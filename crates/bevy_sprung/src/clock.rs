@@ -60,16 +60,33 @@ impl SpringTime<'_> {
 }
 
 impl FrameSteps {
-    /// The step of `clock`, or of the default clock for `None`: a table lookup (the option's
-    /// three states are the table's indices).
+    /// The index of `clock` among the steps (`None`: the default clock): the option's three
+    /// states are the indices, so this is free.
     #[inline]
-    pub(crate) fn dt(self, clock: Option<SpringClock>) -> f32 {
-        let index = match clock {
+    pub(crate) fn index(clock: Option<SpringClock>) -> u8 {
+        match clock {
             Some(SpringClock::Game) => 0,
             Some(SpringClock::Real) => 1,
             None => 2,
-        };
-        self.0[index]
+        }
+    }
+
+    /// The step of the clock at `index`.
+    #[inline]
+    pub(crate) fn of(self, index: u8) -> f32 {
+        self.0[usize::from(index)]
+    }
+
+    /// The step of `clock`, or of the default clock for `None`.
+    #[inline]
+    pub(crate) fn dt(self, clock: Option<SpringClock>) -> f32 {
+        self.of(Self::index(clock))
+    }
+
+    /// The steps of a test: `dt` on every clock.
+    #[cfg(test)]
+    pub(crate) fn all(dt: f32) -> Self {
+        Self([dt; 3])
     }
 }
 

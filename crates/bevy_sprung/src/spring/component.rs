@@ -14,6 +14,7 @@ use bevy::math::VectorSpace;
 use bevy::prelude::*;
 use sprung::{RestThreshold, Spring};
 
+use super::table::TransitionTable;
 use crate::clock::SpringClock;
 use crate::property::{OffsetOf, SpringProperty, ValueOf, VelocityOf};
 use crate::space::{Carried, SpringSpace, SpringVector};
@@ -86,39 +87,31 @@ struct Motion<P: SpringProperty> {
     offset: Carried<OffsetOf<P>>,
     /// Time not yet simulated while hidden, in seconds.
     pending: f32,
-    /// The last parameters that made a valid spring (restored if reflection breaks them).
-    last_valid: Spring<f32>,
-    /// The rest tolerances `rest_squared` was computed from (a `rest` that differs, set through
-    /// reflection, sends the step the general way, which recomputes it).
-    rest_key: RestThreshold<f32>,
     /// The squared offset and speed tolerances as applied at `active_target` (raised to what
     /// `f32` resolves there): the rest test is two comparisons.
     rest_squared: (f32, f32),
-    /// The time step `increments` is the transition of (NaN: none). While nothing but the
-    /// stepping system touches the spring and the frame's time step is this one, the step uses
-    /// `increments` without looking anything up.
-    step_dt: f32,
-    /// The increment matrix `D = M − I` over `step_dt`, row-major.
-    increments: [f32; 4],
+    /// The spring's slot in its property's transition table, valid in table generation
+    /// `generation` (`u32::MAX`: none). While nothing but the stepping system touches the
+    /// spring, its transition is one indexed load.
+    slot: u32,
+    generation: u32,
 }
 
 impl<P: SpringProperty> Default for Motion<P> {
     fn default() -> Self {
-        Self::new(ValueOf::<P>::default(), Spring::default(), P::DEFAULT_REST)
+        Self::new(ValueOf::<P>::default(), P::DEFAULT_REST)
     }
 }
 
 impl<P: SpringProperty> Motion<P> {
-    fn new(target: ValueOf<P>, spring: Spring<f32>, rest: RestThreshold<f32>) -> Self {
+    fn new(target: ValueOf<P>, rest: RestThreshold<f32>) -> Self {
         Self {
             active_target: target,
             offset: Carried::new(OffsetOf::<P>::ZERO),
             pending: 0.0,
-            last_valid: spring,
-            rest_key: rest,
             rest_squared: rest_squared::<P>(rest, target),
-            step_dt: f32::NAN,
-            increments: [0.0; 4],
+            slot: u32::MAX,
+            generation: TransitionTable::NO_GENERATION,
         }
     }
 }
@@ -213,7 +206,7 @@ impl<P: SpringProperty> PropertySpring<P> {
             target_velocity: OffsetOf::<P>::ZERO,
             rest: P::DEFAULT_REST,
             clock: None,
-            motion: Motion::new(target, spring, P::DEFAULT_REST),
+            motion: Motion::new(target, P::DEFAULT_REST),
         }
     }
 
@@ -251,7 +244,6 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     pub fn set_spring(&mut self, spring: Spring<f32>) {
         self.spring = spring;
-        self.motion.last_valid = spring;
     }
 
     /// Where the spring is heading.
@@ -377,7 +369,6 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     pub fn set_rest(&mut self, rest: RestThreshold<f32>) {
         self.rest = rest;
-        self.motion.rest_key = rest;
         self.motion.rest_squared = rest_squared::<P>(rest, self.motion.active_target);
     }
 
@@ -632,7 +623,7 @@ mod serde_impls {
                 }
             }
             spring.clock = read.clock.0;
-            spring.motion = Motion::new(read.target, read.spring, spring.rest);
+            spring.motion = Motion::new(read.target, spring.rest);
             if let Given(Some(rest)) = read.rest {
                 spring.set_rest(rest);
             }

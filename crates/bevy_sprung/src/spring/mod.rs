@@ -6,6 +6,7 @@ mod component;
 mod event;
 mod plugin;
 mod systems;
+mod table;
 #[cfg(test)]
 mod tests;
 

@@ -6,6 +6,7 @@ use bevy::prelude::*;
 use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringAsleep, Stepped};
 use super::event::SpringSettled;
+use super::table::TransitionTable;
 use crate::clock::SpringTime;
 use crate::property::SpringProperty;
 
@@ -19,6 +20,7 @@ type Seen = ();
 /// sleep (triggering [`SpringSettled<P>`]).
 pub(crate) fn step_springs<P: SpringProperty>(
     time: SpringTime,
+    mut table: Local<TransitionTable>,
     mut springs: Query<
         (Entity, &mut PropertySpring<P>, &mut P::Component),
         (Without<SpringAsleep<P>>, Seen),
@@ -39,33 +41,35 @@ pub(crate) fn step_springs<P: SpringProperty>(
 ) {
     let steps = time.steps();
     let mut cache = TransitionCache::default();
+    let table = &mut *table;
+    let mut count = 0;
     for (entity, spring, mut component) in &mut springs {
         // Changed since this system last ran: by something else than this system, which marks
         // every spring it steps (a retarget, a kick, an edit through reflection).
         let untouched = !spring.is_changed();
         // The spring changes every frame it is stepped; the property only when it moves.
         let spring = spring.into_inner();
-        let dt = steps.dt(spring.clock());
-        let frame = spring.step(P::get(&component), dt, false, untouched, &mut cache);
+        let current = P::get(&component);
+        let frame = spring.step(current, steps, false, untouched, (table, &mut cache));
         if let Some(value) = frame.write {
             P::set(&mut component, value);
         }
         if frame.outcome == Stepped::Settled {
             put_to_sleep::<P>(&commands, entity);
         }
+        count += 1;
     }
     // Springs that may skip frames while nobody sees them (`ViewVisibility` lags a frame).
     #[cfg(feature = "visibility")]
-    catching_up.par_iter_mut().for_each_init(
-        Box::<TransitionCache>::default,
-        |cache, (entity, mut spring, mut component, visibility)| {
-            let dt = steps.dt(spring.clock());
-            let hidden = visibility.is_some_and(|visibility| !visibility.get());
-            if spring.step_on(&mut component, dt, hidden, cache) == Stepped::Settled {
-                put_to_sleep::<P>(&commands, entity);
-            }
-        },
-    );
+    for (entity, mut spring, mut component, visibility) in &mut catching_up {
+        let hidden = visibility.is_some_and(|visibility| !visibility.get());
+        let stepped = spring.step_on(&mut component, steps, hidden, (table, &mut cache));
+        if stepped == Stepped::Settled {
+            put_to_sleep::<P>(&commands, entity);
+        }
+        count += 1;
+    }
+    table.collect(count);
 }
 
 /// Marks a spring that settled as asleep and triggers [`SpringSettled<P>`]; out of line, so

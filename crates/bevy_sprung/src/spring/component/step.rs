@@ -7,14 +7,17 @@
 
 use bevy::log::warn_once;
 use bevy::math::{NormedVectorSpace, VectorSpace};
+#[cfg(any(test, feature = "visibility"))]
 use core::ops::DerefMut;
 
 use sprung::{Spring, SpringState, Transition};
 
 use super::PropertySpring;
+use crate::clock::FrameSteps;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
 use crate::space::{Carried, SpringSpace, SpringVector};
 use crate::spring::cache::TransitionCache;
+use crate::spring::table::TransitionTable;
 
 /// What one frame did to a spring, and the value to write, if it changed.
 #[derive(Clone, Copy, Debug)]
@@ -79,27 +82,27 @@ impl<P: SpringProperty> PropertySpring<P> {
     pub(crate) fn step_on<C: DerefMut<Target = P::Component>>(
         &mut self,
         component: &mut C,
-        dt: f32,
+        steps: FrameSteps,
         hidden: bool,
-        cache: &mut TransitionCache,
+        (table, cache): (&mut TransitionTable, &mut TransitionCache),
     ) -> Stepped {
-        let frame = self.step(P::get(&**component), dt, hidden, false, cache);
+        let frame = self.step(P::get(&**component), steps, hidden, false, (table, cache));
         if let Some(value) = frame.write {
             P::set(&mut **component, value);
         }
         frame.outcome
     }
 
-    /// One frame of the spring over `dt` (`hidden`: nobody sees it, defer) from the property's
-    /// `current` value: the new value, only if it changed. `untouched`: nothing but the stepping
-    /// system changed the spring since its last step (Bevy's change ticks say so).
+    /// One frame of the spring (`hidden`: nobody sees it, defer) from the property's `current`
+    /// value: the new value, only if it changed. `untouched`: nothing but the stepping system
+    /// changed the spring since its last step (Bevy's change ticks say so).
     ///
-    /// The common case — an untouched spring stepped over the same time step as last frame —
-    /// reuses its increment matrix and is straight-line, a handful of vector instructions. A
-    /// spring that was touched, or a new time step, first checks that the step is still the
-    /// usual one (the target of its last step, no moving target, no time pending) and looks its
-    /// transition up. Every other case, and any result that is not finite or at rest, goes out
-    /// of line from the same, untouched state.
+    /// The common case — an untouched spring — finds its transition in its slot of the
+    /// property's [`TransitionTable`] and is straight-line, a handful of vector instructions. A
+    /// spring that was touched first checks that its step is still the usual one (the target of
+    /// its last step, no moving target, no time pending) and finds its slot. Every other case,
+    /// and any result that is not finite or at rest, goes out of line from the same, untouched
+    /// state.
     #[expect(
         clippy::inline_always,
         reason = "the per-entity loop's hot path: measured 60 instructions per spring cheaper \
@@ -109,22 +112,20 @@ impl<P: SpringProperty> PropertySpring<P> {
     pub(crate) fn step(
         &mut self,
         current: ValueOf<P>,
-        dt: f32,
+        steps: FrameSteps,
         hidden: bool,
         untouched: bool,
-        cache: &mut TransitionCache,
+        (table, cache): (&mut TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        #[expect(
-            clippy::float_cmp,
-            reason = "a cached transition is for exactly this time step, bit for bit"
-        )]
-        let same_step = dt == self.motion.step_dt;
-        let increments = if untouched & !hidden & same_step {
-            Some(self.motion.increments)
+        let clock = FrameSteps::index(self.clock);
+        let dt = steps.of(clock);
+        let slot = if untouched & !hidden & (self.motion.generation == table.generation()) {
+            Some(self.motion.slot)
         } else {
-            self.usual_increments(dt, hidden, cache)
+            self.usual_slot(dt, clock, hidden, table)
         };
-        if let Some([d00, d01, d10, d11]) = increments {
+        if let Some(slot) = slot.and_then(|slot| table.slot(slot)) {
+            let [d00, d01, d10, d11] = slot.increments(&self.spring, dt);
             let target = self.target;
             let carried = self.motion.offset;
             let before = if P::Space::is_written(current, target, carried) {
@@ -151,35 +152,42 @@ impl<P: SpringProperty> PropertySpring<P> {
                 };
             }
         }
-        self.motion.step_dt = f32::NAN;
-        self.step_general(current, dt, hidden, cache)
+        let frame = self.step_general(current, dt, hidden, (table, cache));
+        self.motion.generation = TransitionTable::NO_GENERATION;
+        frame
     }
 
-    /// The increment matrix over `dt` if this frame's step is the usual one (a visible spring
-    /// toward the target of its last step, which does not move, with no time pending and the
-    /// tolerances it was set up with), remembered for the frames that follow; `None` otherwise.
+    /// The spring's slot if this frame's step is the usual one (a visible spring toward the
+    /// target of its last step, which does not move, with no time pending and the tolerances it
+    /// was set up with), remembered for the frames that follow; `None` otherwise.
     #[inline]
-    fn usual_increments(
+    fn usual_slot(
         &mut self,
         dt: f32,
+        clock: u8,
         hidden: bool,
-        cache: &mut TransitionCache,
-    ) -> Option<[f32; 4]> {
-        // Non-short-circuit: one branch for the lot.
+        table: &mut TransitionTable,
+    ) -> Option<u32> {
         let usual = !hidden
             & (dt > 0.0)
             & (self.motion.pending == 0.0)
             & (self.target == self.motion.active_target)
-            & (self.target_velocity == OffsetOf::<P>::ZERO)
-            & (self.rest == self.motion.rest_key);
+            & (self.target_velocity == OffsetOf::<P>::ZERO);
         if !usual {
             return None;
         }
-        let [[d00, d01], [d10, d11]] = cache.get(&self.spring, dt)?.increment_matrix();
-        let increments = [d00, d01, d10, d11];
-        self.motion.step_dt = dt;
-        self.motion.increments = increments;
-        Some(increments)
+        // Touched: the tolerances may have changed too (a `rest` set through reflection).
+        self.motion.rest_squared = super::rest_squared::<P>(self.rest, self.target);
+        let (slot, generation) = (self.motion.slot, table.generation());
+        let slot = if self.motion.generation == generation && table.holds(slot, &self.spring, clock)
+        {
+            slot
+        } else {
+            table.find(&self.spring, clock)?
+        };
+        self.motion.slot = slot;
+        self.motion.generation = generation;
+        Some(slot)
     }
 
     /// [`step`](Self::step) in every case: retargets, catch-up, moving targets, input written
@@ -190,9 +198,9 @@ impl<P: SpringProperty> PropertySpring<P> {
         current: ValueOf<P>,
         dt: f32,
         hidden: bool,
-        cache: &mut TransitionCache,
+        (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        self.repair(current);
+        self.repair(current, table);
         let target = self.target;
         let retargeted = target != self.motion.active_target;
         if hidden && !retargeted {
@@ -228,7 +236,6 @@ impl<P: SpringProperty> PropertySpring<P> {
             self.motion.active_target = target;
         }
         // The tolerances as applied toward this target (and any `rest` reflection wrote).
-        self.motion.rest_key = self.rest;
         self.motion.rest_squared = super::rest_squared::<P>(self.rest, target);
         if dt > 0.0 {
             (offset, velocity) = self.advance(cache, target, (offset, velocity), dt);
@@ -240,7 +247,7 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// Restores a valid state where reflection (an inspector, a scene) wrote an invalid one,
     /// with one warning each: the last valid target, zero velocities, the last valid parameters.
     #[cold]
-    fn repair(&mut self, current: ValueOf<P>) {
+    fn repair(&mut self, current: ValueOf<P>, table: &TransitionTable) {
         if !P::Space::is_valid(self.target) {
             warn_once!(
                 "bevy_sprung: a spring's target is not finite ({:?}); it keeps its last valid \
@@ -274,14 +281,15 @@ impl<P: SpringProperty> PropertySpring<P> {
             self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
         }
         let spring = self.spring;
-        if Spring::new(spring.mass(), spring.stiffness(), spring.damping()).is_ok() {
-            self.motion.last_valid = spring;
-        } else {
+        if Spring::new(spring.mass(), spring.stiffness(), spring.damping()).is_err() {
             warn_once!(
                 "bevy_sprung: a spring has invalid parameters ({spring:?}); it keeps its last \
                  valid ones"
             );
-            self.spring = self.motion.last_valid;
+            // Its slot holds the parameters it last stepped with, which were valid.
+            self.spring = table
+                .parameters(self.motion.slot, self.motion.generation)
+                .unwrap_or_default();
         }
     }
 

@@ -1,0 +1,225 @@
+//! Every distinct spring's transition, kept across frames: what the per-entity step reads.
+
+use bevy::platform::collections::HashMap;
+use sprung::{Spring, Transition};
+
+/// What makes a slot: the bits of the spring's parameters, and the clock index
+/// ([`FrameSteps`](crate::clock::FrameSteps)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct Key {
+    parameters: [u32; 3],
+    clock: u8,
+}
+
+impl Key {
+    #[inline]
+    fn new(spring: &Spring<f32>, clock: u8) -> Self {
+        Self {
+            parameters: [
+                spring.mass().to_bits(),
+                spring.stiffness().to_bits(),
+                spring.damping().to_bits(),
+            ],
+            clock,
+        }
+    }
+}
+
+/// The data a transition over a nearby time step is extended from: the transition's functions
+/// at `dt` and the rates that generate their derivatives.
+#[derive(Clone, Copy, Debug)]
+struct Anchor {
+    /// The time step the values are for.
+    dt: f32,
+    /// `f1(dt)`, `g(dt) = f1'(dt)`, `g0(dt) = ∫₀ᵈᵗ f1`.
+    f1: f32,
+    g: f32,
+    g0: f32,
+    /// `ω² = k/m` and `2b = c/m`: `f1'' = −2b·f1' − ω²·f1`.
+    omega_squared: f32,
+    rate: f32,
+    /// The largest `|δ|` the extension is accurate for (below `f32`'s rounding).
+    reach: f32,
+}
+
+/// `(ρ·δ)` up to which the degree-4 Taylor extension stays below `f32`'s unit roundoff: its
+/// first omitted term is `(ρδ)⁵/5!` of the leading one.
+const TAYLOR_REACH: f32 = 0.03;
+
+impl Anchor {
+    /// The anchor of `transition` for a spring of `omega_squared` and damping rate `rate`.
+    fn new(dt: f32, transition: &Transition<f32>, omega_squared: f32, rate: f32) -> Self {
+        let [[_, f1], [_, g]] = transition.matrix();
+        // ρ ≤ 2b + ω bounds the spectral radius of [[0, 1], [−ω², −2b]].
+        let radius = rate + omega_squared.sqrt();
+        let reach = if radius > 0.0 {
+            TAYLOR_REACH / radius
+        } else {
+            f32::INFINITY
+        };
+        Self {
+            dt,
+            f1,
+            g,
+            g0: transition.acceleration_gain(),
+            omega_squared,
+            rate,
+            reach: reach.min(0.1 * dt),
+        }
+    }
+
+    /// The increment matrix over `dt`, if within reach: `f1`, `f1'` and `g0 = ∫f1` continued by
+    /// their Taylor series in `δ = dt − anchor` (derivatives from the spring's own equation), and
+    /// `D = [[−ω²·g0, f1], [−ω²·f1, −(ω²·g0 + 2b·f1)]]`: every entry a sum of terms of one sign
+    /// at small `δ`, so nothing cancels (`D₁₁` is not formed as `g − 1`).
+    #[inline]
+    fn increments(&self, dt: f32) -> Option<[f32; 4]> {
+        let delta = dt - self.dt;
+        // NaN-safe: a NaN or infinite delta is not within reach.
+        let within = delta.abs() <= self.reach;
+        if !within {
+            return None;
+        }
+        let (w2, rate) = (self.omega_squared, self.rate);
+        let d0 = self.f1;
+        let d1 = self.g;
+        let d2 = -rate * d1 - w2 * d0;
+        let d3 = -rate * d2 - w2 * d1;
+        let d4 = -rate * d3 - w2 * d2;
+        let h = delta;
+        let f1 = d0 + h * (d1 + h / 2.0 * (d2 + h / 3.0 * (d3 + h / 4.0 * d4)));
+        let g0 =
+            self.g0 + h * (d0 + h / 2.0 * (d1 + h / 3.0 * (d2 + h / 4.0 * (d3 + h / 5.0 * d4))));
+        let w2g0 = w2 * g0;
+        Some([-w2g0, f1, -(w2 * f1), -(w2g0 + rate * f1)])
+    }
+}
+
+/// One distinct spring (and clock) and its transition for the current time step.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Slot {
+    key: Key,
+    /// The time step `increments` is for (NaN: none yet).
+    dt: f32,
+    /// `D = M − I` over `dt`, row-major.
+    increments: [f32; 4],
+    anchor: Option<Anchor>,
+}
+
+impl Slot {
+    /// The increments over `dt`, refreshed if `dt` changed: extended from the anchor when it is
+    /// close, otherwise computed exactly (and anchored there).
+    #[inline]
+    pub(crate) fn increments(&mut self, spring: &Spring<f32>, dt: f32) -> [f32; 4] {
+        #[expect(
+            clippy::float_cmp,
+            reason = "the increments are for exactly this time step, bit for bit"
+        )]
+        if self.dt != dt {
+            self.refresh(spring, dt);
+        }
+        self.increments
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn refresh(&mut self, spring: &Spring<f32>, dt: f32) {
+        if let Some(increments) = self.anchor.and_then(|anchor| anchor.increments(dt)) {
+            self.increments = increments;
+        } else {
+            let transition = spring.transition(dt);
+            let [[d00, d01], [d10, d11]] = transition.increment_matrix();
+            self.increments = [d00, d01, d10, d11];
+            let mass = spring.mass();
+            self.anchor = Some(Anchor::new(
+                dt,
+                &transition,
+                spring.stiffness() / mass,
+                spring.damping() / mass,
+            ));
+        }
+        self.dt = dt;
+    }
+}
+
+/// The slots of every distinct `(spring, clock)` of one property, kept by its stepping system
+/// across frames. A spring remembers its slot's index (and the table's generation), so that
+/// while nothing touches it, finding its transition is one indexed load, however many springs
+/// the scene has: one shared spring, a handful, or one per entity.
+///
+/// Slots are added when a spring first needs one and never move; when the table has far more
+/// slots than springs (springs despawned or changed), it is cleared and its generation advances,
+/// so every spring finds (or makes) its slot again.
+#[derive(Default)]
+pub(crate) struct TransitionTable {
+    slots: Vec<Slot>,
+    index: HashMap<Key, u32>,
+    generation: u32,
+}
+
+impl TransitionTable {
+    /// A generation no table is ever in: what a spring without a slot remembers (generations
+    /// are even).
+    pub(crate) const NO_GENERATION: u32 = 1;
+
+    /// The generation the table is in: a spring's slot index is valid only in its generation.
+    #[inline]
+    pub(crate) fn generation(&self) -> u32 {
+        self.generation
+    }
+
+    /// The slot at `index`, from a spring that remembered it in this generation.
+    #[inline]
+    pub(crate) fn slot(&mut self, index: u32) -> Option<&mut Slot> {
+        self.slots.get_mut(index as usize)
+    }
+
+    /// The index of the slot of `spring` on clock `clock`, added if new, or `None` for
+    /// parameters that are not a valid spring (possible through reflection).
+    pub(crate) fn find(&mut self, spring: &Spring<f32>, clock: u8) -> Option<u32> {
+        let key = Key::new(spring, clock);
+        if let Some(&index) = self.index.get(&key) {
+            return Some(index);
+        }
+        Spring::new(spring.mass(), spring.stiffness(), spring.damping()).ok()?;
+        let index = u32::try_from(self.slots.len()).ok()?;
+        self.slots.push(Slot {
+            key,
+            dt: f32::NAN,
+            increments: [0.0; 4],
+            anchor: None,
+        });
+        self.index.insert(key, index);
+        Some(index)
+    }
+
+    /// After a frame that stepped `springs` springs: clears the table when it holds more than
+    /// twice as many slots as there are springs (and a few more), so that springs despawned or
+    /// changed do not keep slots for ever.
+    pub(crate) fn collect(&mut self, springs: usize) {
+        if self.slots.len() > 2 * springs + 64 {
+            self.slots.clear();
+            self.index.clear();
+            self.generation = self.generation.wrapping_add(2);
+        }
+    }
+
+    /// The parameters of slot `index` in `generation`, if that is this table's: the last valid
+    /// parameters of the spring that remembers it.
+    pub(crate) fn parameters(&self, index: u32, generation: u32) -> Option<Spring<f32>> {
+        let slot = self
+            .slots
+            .get(index as usize)
+            .filter(|_| generation == self.generation)?;
+        let [mass, stiffness, damping] = slot.key.parameters.map(f32::from_bits);
+        Spring::new(mass, stiffness, damping).ok()
+    }
+
+    /// Whether `spring` is what slot `index` was made for (after it was touched).
+    #[inline]
+    pub(crate) fn holds(&self, index: u32, spring: &Spring<f32>, clock: u8) -> bool {
+        self.slots
+            .get(index as usize)
+            .is_some_and(|slot| slot.key == Key::new(spring, clock))
+    }
+}
