@@ -11,6 +11,7 @@ mod harness;
 mod arrival;
 mod bad_input;
 mod catch_up;
+mod choreography;
 mod clocks;
 mod follow;
 mod motion;

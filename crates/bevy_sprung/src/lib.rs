@@ -56,12 +56,18 @@
 //!   [`SpringClock`](clock::SpringClock) and the spring components' configuration.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
+extern crate alloc;
+
+pub mod choreography;
 pub mod clock;
 #[cfg(feature = "color")]
 pub mod color;
+#[cfg(feature = "curve")]
+pub mod curve;
 pub mod follow;
 mod plugin;
 pub mod property;
+pub mod reduced_motion;
 pub mod space;
 pub mod spin;
 pub mod spring;
@@ -90,6 +96,10 @@ pub mod __macro {
 /// The types most apps need: `use bevy_sprung::prelude::*;`.
 pub mod prelude {
     pub use crate::SpringPlugin;
+    pub use crate::choreography::{
+        AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted, SequenceInterrupted,
+        SpringGroup, SpringGroupSettled, SpringSequence,
+    };
     pub use crate::clock::{DefaultSpringClock, SpringClock};
     #[cfg(feature = "sprite")]
     pub use crate::color::SpriteColorSpring;
@@ -99,6 +109,7 @@ pub mod prelude {
     };
     pub use crate::follow::{SpringFollow, TargetMotion};
     pub use crate::property::SpringProperty;
+    pub use crate::reduced_motion::{KeepMotion, ReducedMotion};
     #[cfg(feature = "color")]
     pub use crate::space::OklabColor;
     #[cfg(feature = "ui")]

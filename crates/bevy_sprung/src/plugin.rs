@@ -4,8 +4,10 @@ use bevy::ecs::intern::Interned;
 use bevy::ecs::schedule::ScheduleLabel;
 use bevy::prelude::*;
 
+use crate::choreography::ChoreographyPlugin;
 use crate::clock::{SpringClock, SpringClockPlugin};
 use crate::follow::FollowPlugin;
+use crate::reduced_motion::ReducedMotionPlugin;
 use crate::spin::SpinPlugin;
 use crate::spring::SpringSchedulePlugin;
 use crate::transform::TransformSpringPlugin;
@@ -83,6 +85,8 @@ impl Plugin for SpringPlugin {
             TransformSpringPlugin,
             SpinPlugin,
             FollowPlugin,
+            ReducedMotionPlugin,
+            ChoreographyPlugin,
         ));
         #[cfg(feature = "color")]
         app.add_plugins(crate::color::ColorSpringPlugin);

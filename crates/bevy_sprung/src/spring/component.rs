@@ -15,6 +15,7 @@ use bevy::prelude::*;
 use sprung::{RestThreshold, Spring};
 
 use super::table::TransitionTable;
+use crate::choreography::Choreographed;
 use crate::clock::SpringClock;
 use crate::property::{OffsetOf, SpringProperty, ValueOf, VelocityOf};
 use crate::space::{Carried, SpringSpace, SpringVector};
@@ -393,6 +394,28 @@ impl<P: SpringProperty> PropertySpring<P> {
         self.target != self.motion.active_target
             || self.velocity != OffsetOf::<P>::ZERO
             || self.target_velocity != OffsetOf::<P>::ZERO
+    }
+}
+
+impl<P: SpringProperty> Choreographed<P> for PropertySpring<P> {
+    #[inline]
+    fn target(&self) -> ValueOf<P> {
+        self.target
+    }
+
+    #[inline]
+    fn retarget(&mut self, target: ValueOf<P>) {
+        self.set_target(target);
+    }
+
+    #[inline]
+    fn set_parameters(&mut self, spring: Spring<f32>) {
+        self.set_spring(spring);
+    }
+
+    #[inline]
+    fn clock(&self) -> Option<SpringClock> {
+        self.clock
     }
 }
 

@@ -11,6 +11,7 @@ use bevy::transform::TransformSystems;
 
 use super::component::{PropertySpring, SpringAsleep};
 use super::systems::{step_springs, wake_springs};
+use crate::choreography::{SpringGroup, SpringSequence, drive_sequences, note_awake};
 use crate::clock::SpringClockPlugin;
 use crate::property::SpringProperty;
 
@@ -163,12 +164,20 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
             .replace(PropertySystems::<P>::default().intern());
         app.register_type::<PropertySpring<P>>()
             .register_type::<SpringAsleep<P>>()
+            .register_type::<SpringSequence<P>>()
             .add_systems(
                 schedule,
-                (wake_springs::<P>, step_springs::<P>)
+                (
+                    drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>
+                        .run_if(any_with_component::<SpringSequence<P>>),
+                    (wake_springs::<P>, step_springs::<P>)
+                        .chain()
+                        .run_if(any_with_component::<PropertySpring<P>>),
+                    note_awake::<PropertySpring<P>, SpringAsleep<P>>
+                        .run_if(any_with_component::<SpringGroup>),
+                )
                     .chain()
-                    .in_set(PropertySystems::<P>::default())
-                    .run_if(any_with_component::<PropertySpring<P>>),
+                    .in_set(PropertySystems::<P>::default()),
             )
             .configure_sets(
                 schedule,

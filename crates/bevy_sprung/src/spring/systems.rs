@@ -7,8 +7,10 @@ use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringAsleep, Stepped};
 use super::event::SpringSettled;
 use super::table::TransitionTable;
+use crate::choreography::{SettleTracker, SpringGroup};
 use crate::clock::SpringTime;
 use crate::property::SpringProperty;
+use crate::reduced_motion::{KeepMotion, ReducedMotion};
 
 /// Springs that never skip a frame: the common case, with nothing to fetch for visibility.
 #[cfg(feature = "visibility")]
@@ -20,6 +22,8 @@ type Seen = ();
 /// sleep (triggering [`SpringSettled<P>`]).
 pub(crate) fn step_springs<P: SpringProperty>(
     time: SpringTime,
+    reduced_motion: Option<Res<ReducedMotion>>,
+    exempt: Query<(), With<KeepMotion>>,
     mut table: Local<TransitionTable>,
     mut springs: Query<
         (Entity, &mut PropertySpring<P>, &mut P::Component),
@@ -43,6 +47,27 @@ pub(crate) fn step_springs<P: SpringProperty>(
     let mut cache = TransitionCache::default();
     let table = &mut *table;
     let mut count = 0;
+    let preference = reduced_motion.map_or(ReducedMotion::Full, |preference| *preference);
+    if preference.is_reduced() {
+        for (entity, spring, mut component) in &mut springs {
+            let spring = spring.into_inner();
+            let current = P::get(&component);
+            let frame = if exempt.contains(entity) {
+                spring.step(current, steps, false, false, (table, &mut cache))
+            } else {
+                spring.step_reduced(current, steps, preference, (table, &mut cache))
+            };
+            if let Some(value) = frame.write {
+                P::set(&mut component, value);
+            }
+            if frame.outcome == Stepped::Settled {
+                put_to_sleep::<P>(&commands, entity);
+            }
+            count += 1;
+        }
+        table.collect(count);
+        return;
+    }
     for (entity, spring, mut component) in &mut springs {
         // Changed since this system last ran: by something else than this system, which marks
         // every spring it steps (a retarget, a kick, an edit through reflection).
@@ -91,14 +116,19 @@ fn put_to_sleep<P: SpringProperty>(commands: &ParallelCommands, entity: Entity) 
 /// sleeping springs costs one comparison per spring per frame.
 pub(crate) fn wake_springs<P: SpringProperty>(
     mut commands: Commands,
+    mut tracker: Option<ResMut<SettleTracker>>,
     springs: Query<
-        (Entity, &PropertySpring<P>),
+        (Entity, &PropertySpring<P>, Has<SpringGroup>),
         (With<SpringAsleep<P>>, Changed<PropertySpring<P>>),
     >,
 ) {
-    for (entity, spring) in &springs {
+    for (entity, spring, grouped) in &springs {
         if spring.wants_to_move() {
             commands.entity(entity).try_remove::<SpringAsleep<P>>();
+            // Woken (perhaps to settle again this very frame): its group hears of it.
+            if grouped && let Some(tracker) = tracker.as_mut() {
+                tracker.moving(entity);
+            }
         }
     }
 }

@@ -15,6 +15,7 @@ use sprung::{Spring, SpringState, Transition};
 use super::PropertySpring;
 use crate::clock::FrameSteps;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
+use crate::reduced_motion::ReducedMotion;
 use crate::space::{Carried, SpringSpace, SpringVector};
 use crate::spring::cache::TransitionCache;
 use crate::spring::table::TransitionTable;
@@ -154,6 +155,45 @@ impl<P: SpringProperty> PropertySpring<P> {
         }
         let frame = self.step_general(current, dt, hidden, (table, cache));
         self.motion.generation = TransitionTable::NO_GENERATION;
+        frame
+    }
+
+    /// One frame under a reduced-motion `preference` (out of line: an accessibility setting,
+    /// not the hot path). `Snap` jumps to the target (and settles, unless the target moves);
+    /// the others step the spring the general way, critically damped at least or with its time
+    /// scaled.
+    #[inline(never)]
+    pub(crate) fn step_reduced(
+        &mut self,
+        current: ValueOf<P>,
+        steps: FrameSteps,
+        preference: ReducedMotion,
+        (table, cache): (&mut TransitionTable, &mut TransitionCache),
+    ) -> Frame<ValueOf<P>> {
+        let dt = steps.of(FrameSteps::index(self.clock));
+        self.motion.generation = TransitionTable::NO_GENERATION;
+        if preference == ReducedMotion::Snap {
+            self.repair(current, table);
+            let target = self.target;
+            self.motion.active_target = target;
+            self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
+            self.motion.pending = 0.0;
+            self.motion.rest_squared = super::rest_squared::<P>(self.rest, target);
+            self.velocity = OffsetOf::<P>::ZERO;
+            let outcome = if self.target_velocity == OffsetOf::<P>::ZERO {
+                Stepped::Settled
+            } else {
+                Stepped::Moving
+            };
+            return Frame {
+                outcome,
+                write: (!P::Space::same(target, current)).then_some(target),
+            };
+        }
+        let spring = self.spring;
+        self.spring = preference.spring(spring);
+        let frame = self.step_general(current, preference.dt(dt), false, (table, cache));
+        self.spring = spring;
         frame
     }
 

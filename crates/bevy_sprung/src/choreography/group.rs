@@ -1,0 +1,141 @@
+//! One event when a group of springs has settled.
+
+use alloc::borrow::Cow;
+
+use bevy::platform::collections::HashSet;
+use bevy::prelude::*;
+
+/// Makes this entity's springs report together: when every spring on the entity (any property)
+/// has settled, [`AllSpringsSettled`] is triggered on it, once; and when every spring of every
+/// entity in a named group has settled, the global [`SpringGroupSettled`] is triggered, once.
+/// Each time springs of the entity (or group) start moving again, the next settle reports
+/// again. The per-spring [`SpringSettled`](crate::spring::SpringSettled) events fire as always.
+///
+/// Only entities with a `SpringGroup` are tracked: springs without one pay nothing.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn open_menu(mut commands: Commands) {
+///     for index in 0..4 {
+///         commands.spawn((
+///             Transform::default(),
+///             TranslationSpring::new(Spring::snappy(), Vec3::new(0.0, index as f32 * 50.0, 0.0)),
+///             ScaleSpring::new(Spring::bouncy(), Vec3::splat(1.2)),
+///             SpringGroup::named("menu"),
+///         ));
+///     }
+///     commands.add_observer(|settled: On<SpringGroupSettled>| {
+///         info!("every spring of group {} has settled", settled.group);
+///     });
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, open_menu);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Default, Clone, PartialEq, Eq, Hash)]
+#[reflect(Component, Debug, Default, PartialEq, Clone)]
+pub struct SpringGroup {
+    /// The group's name (`None`: the entity alone).
+    pub name: Option<Cow<'static, str>>,
+}
+
+impl SpringGroup {
+    /// The entity's own springs, reported together by [`AllSpringsSettled`].
+    #[must_use]
+    pub const fn this_entity() -> Self {
+        Self { name: None }
+    }
+
+    /// A member of the group `name`, reported by [`SpringGroupSettled`] (and the entity's own
+    /// springs by [`AllSpringsSettled`]).
+    #[must_use]
+    pub fn named(name: impl Into<Cow<'static, str>>) -> Self {
+        Self {
+            name: Some(name.into()),
+        }
+    }
+}
+
+/// Triggered on an entity with a [`SpringGroup`] when all its springs have settled.
+#[derive(EntityEvent, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AllSpringsSettled {
+    /// The entity whose springs all settled.
+    pub entity: Entity,
+}
+
+/// Triggered (globally) when every spring of every entity in a named [`SpringGroup`] has
+/// settled.
+#[derive(Event, Debug, Clone, PartialEq, Eq)]
+pub struct SpringGroupSettled {
+    /// The group.
+    pub group: Cow<'static, str>,
+}
+
+/// Which grouped entities are moving.
+#[derive(Resource, Default, Debug)]
+pub(crate) struct SettleTracker {
+    /// Entities with a spring that moved since they last reported.
+    in_motion: HashSet<Entity>,
+    /// Entities with an awake spring after this frame's steps.
+    awake: HashSet<Entity>,
+}
+
+impl SettleTracker {
+    /// Notes that `entity` has a spring in motion (woken this frame, or awake after its step).
+    pub(crate) fn moving(&mut self, entity: Entity) {
+        self.in_motion.insert(entity);
+    }
+}
+
+/// After property `C`'s springs stepped: notes the grouped entities whose spring on it is
+/// awake (`A`: the property's sleep marker).
+pub(crate) fn note_awake<C: Component, A: Component>(
+    mut tracker: ResMut<SettleTracker>,
+    awake: Query<Entity, (With<SpringGroup>, With<C>, Without<A>)>,
+) {
+    for entity in &awake {
+        tracker.awake.insert(entity);
+        tracker.in_motion.insert(entity);
+    }
+}
+
+/// After every property stepped: reports the grouped entities (and groups) whose springs were
+/// moving and have all settled.
+pub(super) fn announce_settled(
+    mut tracker: ResMut<SettleTracker>,
+    groups: Query<&SpringGroup>,
+    mut commands: Commands,
+) {
+    let SettleTracker { in_motion, awake } = &mut *tracker;
+    let mut settled_groups: Vec<Cow<'static, str>> = Vec::new();
+    in_motion.retain(|&entity| {
+        if awake.contains(&entity) {
+            return true;
+        }
+        // Despawned, or no longer grouped: forget it quietly.
+        let Ok(group) = groups.get(entity) else {
+            return false;
+        };
+        commands.trigger(AllSpringsSettled { entity });
+        if let Some(name) = &group.name
+            && !settled_groups.contains(name)
+        {
+            settled_groups.push(name.clone());
+        }
+        false
+    });
+    for group in settled_groups {
+        let still_moving = in_motion.iter().any(|&entity| {
+            groups
+                .get(entity)
+                .is_ok_and(|member| member.name.as_ref() == Some(&group))
+        });
+        if !still_moving {
+            commands.trigger(SpringGroupSettled { group });
+        }
+    }
+    awake.clear();
+}

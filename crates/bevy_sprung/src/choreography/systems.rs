@@ -1,0 +1,122 @@
+//! Driving sequences, and the events they trigger.
+
+use core::fmt;
+use core::marker::PhantomData;
+
+use bevy::ecs::component::Mutable;
+use bevy::prelude::*;
+use sprung::Spring;
+
+use super::sequence::{SequencePhase, SpringSequence, Tick};
+use crate::clock::{SpringClock, SpringTime};
+use crate::property::{SpringProperty, ValueOf};
+
+/// What a [`SpringSequence<P>`] drives: the spring component of property `P` (implemented by
+/// [`PropertySpring<P>`](crate::spring::PropertySpring)).
+pub trait Choreographed<P: SpringProperty>: Component<Mutability = Mutable> {
+    /// Where the spring is heading.
+    fn target(&self) -> ValueOf<P>;
+    /// Retargets the spring, keeping its velocity.
+    fn retarget(&mut self, target: ValueOf<P>);
+    /// Changes the spring's parameters.
+    fn set_parameters(&mut self, spring: Spring<f32>);
+    /// The clock the spring advances with (`None`: the default clock).
+    fn clock(&self) -> Option<SpringClock>;
+}
+
+/// Triggered on an entity when its [`SpringSequence<P>`] has played its last step: the
+/// tween-completion event for a whole choreography.
+#[derive(EntityEvent)]
+pub struct SequenceCompleted<P: SpringProperty> {
+    /// The entity whose sequence completed.
+    pub entity: Entity,
+    property: PhantomData<fn() -> P>,
+}
+
+/// Triggered on an entity when something else retargeted the spring its
+/// [`SpringSequence<P>`] drives: the sequence was cancelled or paused (see
+/// [`OnInterrupt`](super::OnInterrupt)).
+#[derive(EntityEvent)]
+pub struct SequenceInterrupted<P: SpringProperty> {
+    /// The entity whose sequence was interrupted.
+    pub entity: Entity,
+    property: PhantomData<fn() -> P>,
+}
+
+macro_rules! entity_event {
+    ($name:ident) => {
+        impl<P: SpringProperty> $name<P> {
+            /// The event for `entity`.
+            #[must_use]
+            pub fn new(entity: Entity) -> Self {
+                Self {
+                    entity,
+                    property: PhantomData,
+                }
+            }
+        }
+
+        impl<P: SpringProperty> Clone for $name<P> {
+            fn clone(&self) -> Self {
+                *self
+            }
+        }
+
+        impl<P: SpringProperty> Copy for $name<P> {}
+
+        impl<P: SpringProperty> fmt::Debug for $name<P> {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.debug_struct(stringify!($name))
+                    .field("property", &P::short_type_path())
+                    .field("entity", &self.entity)
+                    .finish()
+            }
+        }
+    };
+}
+
+entity_event!(SequenceCompleted);
+entity_event!(SequenceInterrupted);
+
+/// Before property `P`'s springs step: moves every playing sequence on (a delay that ran out,
+/// a step that settled or timed out), detects interruptions, and triggers the events.
+pub(crate) fn drive_sequences<P, C, A>(
+    time: SpringTime,
+    mut commands: Commands,
+    mut sequences: Query<(Entity, &mut SpringSequence<P>, &mut C, Has<A>)>,
+) where
+    P: SpringProperty,
+    C: Choreographed<P>,
+    A: Component,
+{
+    let steps = time.steps();
+    for (entity, mut sequence, mut spring, asleep) in &mut sequences {
+        if matches!(
+            sequence.phase(),
+            SequencePhase::Finished | SequencePhase::Paused
+        ) {
+            continue;
+        }
+        let target = spring.target();
+        let on_step = sequence.current().is_some_and(|step| step.target == target);
+        // Something else set the spring's target while a step played.
+        if sequence.phase() == SequencePhase::Playing && !sequence.is_resuming() && !on_step {
+            sequence.interrupt();
+            commands.trigger(SequenceInterrupted::<P>::new(entity));
+            continue;
+        }
+        let dt = steps.dt(spring.clock());
+        match sequence.tick(dt, asleep && on_step) {
+            Tick::Idle => {}
+            Tick::Start => {
+                if let Some(step) = sequence.current().copied() {
+                    if let Some(parameters) = step.spring {
+                        spring.set_parameters(parameters);
+                    }
+                    spring.retarget(step.target);
+                }
+            }
+            Tick::Completed => commands.trigger(SequenceCompleted::<P>::new(entity)),
+        }
+    }
+}
