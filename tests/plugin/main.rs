@@ -9,6 +9,7 @@
 mod harness;
 
 mod arrival;
+mod assets;
 mod bad_input;
 mod catch_up;
 mod choreography;

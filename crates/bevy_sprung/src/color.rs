@@ -91,6 +91,15 @@ impl Plugin for ColorSpringPlugin {
     fn build(&self, app: &mut App) {
         #[cfg(feature = "sprite")]
         app.add_plugins(SpringPropertyPlugin::<SpriteTint>::default());
+        #[cfg(all(feature = "sprite", feature = "asset"))]
+        app.add_plugins(crate::asset::SequenceAssetPlugin::<SpriteTint>::default());
+        #[cfg(all(feature = "ui", feature = "asset"))]
+        app.add_plugins((
+            crate::asset::SequenceAssetPlugin::<BackgroundTint>::default(),
+            crate::asset::SequenceAssetPlugin::<BorderTint>::default(),
+            crate::asset::SequenceAssetPlugin::<TextTint>::default(),
+            crate::asset::SequenceAssetPlugin::<ImageTint>::default(),
+        ));
         #[cfg(feature = "ui")]
         app.add_plugins((
             SpringPropertyPlugin::<BackgroundTint>::default(),

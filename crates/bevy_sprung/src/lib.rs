@@ -58,10 +58,13 @@
 
 extern crate alloc;
 
+#[cfg(feature = "asset")]
+pub mod asset;
 pub mod choreography;
 pub mod clock;
 #[cfg(feature = "color")]
 pub mod color;
+pub mod control;
 #[cfg(feature = "curve")]
 pub mod curve;
 pub mod follow;

@@ -94,5 +94,7 @@ impl Plugin for SpringPlugin {
         app.add_plugins(crate::ui::UiSpringPlugin);
         #[cfg(feature = "visibility")]
         app.add_plugins(crate::visibility::CatchUpPlugin);
+        #[cfg(feature = "asset")]
+        app.add_plugins(crate::asset::SpringAssetPlugin);
     }
 }

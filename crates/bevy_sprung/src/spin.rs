@@ -140,6 +140,8 @@ pub struct SpinPlugin;
 impl Plugin for SpinPlugin {
     fn build(&self, app: &mut App) {
         let schedule = spring_schedule(app);
+        #[cfg(feature = "asset")]
+        app.add_plugins(crate::asset::SequenceAssetPlugin::<SpinAngle>::default());
         app.add_plugins(SpringPropertyPlugin::<SpinAngle>::default())
             .register_type::<Spin>()
             .add_systems(

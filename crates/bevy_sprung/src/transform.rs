@@ -59,5 +59,12 @@ impl Plugin for TransformSpringPlugin {
             SpringPropertyPlugin::<Scale>::default(),
             SpringPropertyPlugin::<SignedScale>::default(),
         ));
+        #[cfg(feature = "asset")]
+        app.add_plugins((
+            crate::asset::SequenceAssetPlugin::<Translation>::default(),
+            crate::asset::SequenceAssetPlugin::<Rotation>::default(),
+            crate::asset::SequenceAssetPlugin::<Scale>::default(),
+            crate::asset::SequenceAssetPlugin::<SignedScale>::default(),
+        ));
     }
 }

@@ -116,5 +116,22 @@ impl Plugin for UiSpringPlugin {
             SpringPropertyPlugin::<NodeRight>::default(),
             SpringPropertyPlugin::<NodeBottom>::default(),
         ));
+        #[cfg(feature = "asset")]
+        {
+            use crate::asset::SequenceAssetPlugin;
+            app.add_plugins((
+                SequenceAssetPlugin::<UiTransformTranslation>::default(),
+                SequenceAssetPlugin::<UiTransformScale>::default(),
+                SequenceAssetPlugin::<UiTransformRotation>::default(),
+                SequenceAssetPlugin::<NodeSize>::default(),
+                SequenceAssetPlugin::<NodePosition>::default(),
+                SequenceAssetPlugin::<NodeWidth>::default(),
+                SequenceAssetPlugin::<NodeHeight>::default(),
+                SequenceAssetPlugin::<NodeLeft>::default(),
+                SequenceAssetPlugin::<NodeTop>::default(),
+                SequenceAssetPlugin::<NodeRight>::default(),
+                SequenceAssetPlugin::<NodeBottom>::default(),
+            ));
+        }
     }
 }

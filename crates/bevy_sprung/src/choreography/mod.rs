@@ -14,7 +14,7 @@ pub use group::{AllSpringsSettled, SpringGroup, SpringGroupSettled};
 pub use sequence::{
     Advance, LoopMode, OnInterrupt, Repeat, SequencePhase, SequenceStep, SpringSequence,
 };
-pub use systems::{Choreographed, SequenceCompleted, SequenceInterrupted};
+pub use systems::{SequenceCompleted, SequenceInterrupted};
 
 pub(crate) use group::{SettleTracker, note_awake};
 pub(crate) use systems::drive_sequences;

@@ -3,26 +3,12 @@
 use core::fmt;
 use core::marker::PhantomData;
 
-use bevy::ecs::component::Mutable;
 use bevy::prelude::*;
-use sprung::Spring;
 
 use super::sequence::{SequencePhase, SpringSequence, Tick};
-use crate::clock::{SpringClock, SpringTime};
-use crate::property::{SpringProperty, ValueOf};
-
-/// What a [`SpringSequence<P>`] drives: the spring component of property `P` (implemented by
-/// [`PropertySpring<P>`](crate::spring::PropertySpring)).
-pub trait Choreographed<P: SpringProperty>: Component<Mutability = Mutable> {
-    /// Where the spring is heading.
-    fn target(&self) -> ValueOf<P>;
-    /// Retargets the spring, keeping its velocity.
-    fn retarget(&mut self, target: ValueOf<P>);
-    /// Changes the spring's parameters.
-    fn set_parameters(&mut self, spring: Spring<f32>);
-    /// The clock the spring advances with (`None`: the default clock).
-    fn clock(&self) -> Option<SpringClock>;
-}
+use crate::clock::SpringTime;
+use crate::control::SpringControl;
+use crate::property::SpringProperty;
 
 /// Triggered on an entity when its [`SpringSequence<P>`] has played its last step: the
 /// tween-completion event for a whole choreography.
@@ -86,7 +72,7 @@ pub(crate) fn drive_sequences<P, C, A>(
     mut sequences: Query<(Entity, &mut SpringSequence<P>, &mut C, Has<A>)>,
 ) where
     P: SpringProperty,
-    C: Choreographed<P>,
+    C: SpringControl<P>,
     A: Component,
 {
     let steps = time.steps();

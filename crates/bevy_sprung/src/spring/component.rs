@@ -15,8 +15,8 @@ use bevy::prelude::*;
 use sprung::{RestThreshold, Spring};
 
 use super::table::TransitionTable;
-use crate::choreography::Choreographed;
 use crate::clock::SpringClock;
+use crate::control::SpringControl;
 use crate::property::{OffsetOf, SpringProperty, ValueOf, VelocityOf};
 use crate::space::{Carried, SpringSpace, SpringVector};
 
@@ -397,7 +397,7 @@ impl<P: SpringProperty> PropertySpring<P> {
     }
 }
 
-impl<P: SpringProperty> Choreographed<P> for PropertySpring<P> {
+impl<P: SpringProperty> SpringControl<P> for PropertySpring<P> {
     #[inline]
     fn target(&self) -> ValueOf<P> {
         self.target
@@ -411,6 +411,21 @@ impl<P: SpringProperty> Choreographed<P> for PropertySpring<P> {
     #[inline]
     fn set_parameters(&mut self, spring: Spring<f32>) {
         self.set_spring(spring);
+    }
+
+    #[inline]
+    fn set_rest_threshold(&mut self, rest: RestThreshold<f32>) {
+        self.set_rest(rest);
+    }
+
+    #[inline]
+    fn kick(&mut self, impulse: OffsetOf<P>) {
+        self.add_impulse(impulse);
+    }
+
+    #[inline]
+    fn offset_velocity(&self) -> OffsetOf<P> {
+        self.velocity
     }
 
     #[inline]

@@ -186,6 +186,18 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
         if let Some(previous) = previous {
             app.configure_sets(schedule, PropertySystems::<P>::default().after(previous));
         }
+        // Presets from files reach every property's springs, before they are driven or step.
+        #[cfg(feature = "asset")]
+        app.add_systems(
+            schedule,
+            crate::asset::apply_presets::<P, PropertySpring<P>>
+                .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>)
+                .in_set(PropertySystems::<P>::default())
+                .run_if(
+                    resource_exists::<Assets<crate::asset::SpringPreset>>
+                        .and_then(any_with_component::<crate::asset::UseSpringPreset>),
+                ),
+        );
     }
 
     fn is_unique(&self) -> bool {

@@ -1,0 +1,486 @@
+//! Springs and choreography as assets: RON files loaded with Bevy's `AssetServer`, referenced by
+//! handle from components, reloaded live with Bevy's `file_watcher` feature.
+//!
+//! - `*.spring.ron` is a [`SpringPreset`]: spring parameters in any parametrisation and
+//!   optionally rest tolerances. An entity with [`UseSpringPreset`] gives them to every spring
+//!   it has, when the file loads and each time it changes.
+//! - `*.sequence.ron` is a [`SequencePreset`]: a choreography (steps, delay, repeats). An
+//!   entity with [`UseSequencePreset<P>`] gets the [`SpringSequence<P>`] it describes, its
+//!   targets read as property `P`'s values; edited, it restarts.
+//!
+//! An invalid file fails to load with an error that names the file, the line and column, and
+//! what is wrong (an unknown field, an invalid spring, a target that is not the property's
+//! type); it never panics, and a spring keeps what it had.
+
+use core::fmt;
+use core::marker::PhantomData;
+
+use bevy::asset::io::Reader;
+use bevy::asset::{AssetLoader, LoadContext};
+use bevy::prelude::*;
+use serde::Deserialize;
+use serde::de::DeserializeOwned;
+use sprung::{RestThreshold, Spring};
+
+use crate::choreography::{Advance, OnInterrupt, Repeat, SpringSequence};
+use crate::control::SpringControl;
+use crate::property::{SpringProperty, ValueOf};
+
+/// The RON dialect the files are read in: `Some(…)` may be left out of optional fields.
+fn ron_options() -> ron::Options {
+    ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
+}
+
+/// Spring parameters (and optionally rest tolerances) in a `*.spring.ron` file:
+///
+/// ```ron
+/// (
+///     spring: (duration: 0.35, bounce: 0.2),   // any parametrisation, or (preset: snappy)
+///     rest: (offset: 0.5, speed: 5.0),         // optional, in the property's units
+/// )
+/// ```
+///
+/// # Example
+/// ```
+/// use bevy_sprung::asset::SpringPreset;
+///
+/// let preset = SpringPreset::from_ron(b"(spring: (half_life: 0.1))").unwrap();
+/// assert!((preset.spring.half_life().unwrap() - 0.1).abs() < 1e-6);
+/// let error = SpringPreset::from_ron(b"(spring: (half_life: -1.0))").unwrap_err();
+/// assert!(error.to_string().contains("half-life must be positive"));
+/// ```
+#[derive(Asset, TypePath, Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpringPreset {
+    /// The spring parameters.
+    pub spring: Spring<f32>,
+    /// Rest tolerances, if the file sets them.
+    #[serde(default)]
+    pub rest: Option<RestThreshold<f32>>,
+}
+
+impl SpringPreset {
+    /// Reads a preset from RON.
+    ///
+    /// # Errors
+    /// [`SpringAssetError::Ron`] for text that is not a valid preset (syntax, an unknown field,
+    /// invalid spring parameters), with its position.
+    pub fn from_ron(bytes: &[u8]) -> Result<Self, SpringAssetError> {
+        ron_options()
+            .from_bytes(bytes)
+            .map_err(SpringAssetError::Ron)
+    }
+}
+
+/// One step of a [`SequencePreset`], its target not yet read as any property's value.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SequenceStepPreset {
+    /// The target, read as the property's value when the sequence is made.
+    pub target: ron::Value,
+    /// When the sequence moves on (on settle unless the file says otherwise).
+    #[serde(default = "on_settle")]
+    pub advance: Advance,
+    /// Spring parameters for this step.
+    #[serde(default)]
+    pub spring: Option<Spring<f32>>,
+}
+
+fn on_settle() -> Advance {
+    Advance::OnSettle
+}
+
+fn once() -> Repeat {
+    Repeat::Once
+}
+
+fn cancel() -> OnInterrupt {
+    OnInterrupt::Cancel
+}
+
+/// A choreography in a `*.sequence.ron` file:
+///
+/// ```ron
+/// (
+///     delay: 0.2,                                  // optional
+///     repeat: Forever,                             // Once (default), Times(3), Forever
+///     ping_pong: true,                             // optional
+///     on_interrupt: Pause,                         // Cancel (default) or Pause
+///     steps: [
+///         (target: (1.08, 1.08, 1.0), advance: After(0.45), spring: (preset: gentle)),
+///         (target: (1.0, 1.0, 1.0), advance: OnSettle),
+///     ],
+/// )
+/// ```
+///
+/// The targets are read as the property's values ([`UseSequencePreset<P>`]), so one file can
+/// drive any property whose values it spells (a `Vec3` is `(x, y, z)`, a `Color` is
+/// `Srgba((red: 1.0, green: 0.5, blue: 0.0, alpha: 1.0))`, a `Val` is `Px(200.0)`).
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::asset::SequencePreset;
+/// use bevy_sprung::prelude::*;
+///
+/// let preset = SequencePreset::from_ron(b"(steps: [(target: (0.0, 10.0, 0.0)), (target: (0.0, 0.0, 0.0))])").unwrap();
+/// let sequence = preset.sequence::<Translation>().unwrap();
+/// assert_eq!(sequence.steps()[0].target, Vec3::new(0.0, 10.0, 0.0));
+/// // A target the property cannot read is an error that says which step.
+/// let error = preset.sequence::<bevy_sprung::spin::SpinAngle>().unwrap_err();
+/// assert!(error.to_string().contains("step 0"));
+/// ```
+#[derive(Asset, TypePath, Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SequencePreset {
+    /// Seconds before the first step.
+    #[serde(default)]
+    pub delay: f32,
+    /// How many times the steps play.
+    #[serde(default = "once")]
+    pub repeat: Repeat,
+    /// Back and forth instead of cycling.
+    #[serde(default)]
+    pub ping_pong: bool,
+    /// What an interruption does.
+    #[serde(default = "cancel")]
+    pub on_interrupt: OnInterrupt,
+    /// The steps.
+    pub steps: Vec<SequenceStepPreset>,
+}
+
+impl SequencePreset {
+    /// Reads a choreography from RON.
+    ///
+    /// # Errors
+    /// [`SpringAssetError::Ron`] for text that is not a valid choreography, with its position.
+    pub fn from_ron(bytes: &[u8]) -> Result<Self, SpringAssetError> {
+        ron_options()
+            .from_bytes(bytes)
+            .map_err(SpringAssetError::Ron)
+    }
+
+    /// The sequence this describes for property `P`, its targets read as `P`'s values.
+    ///
+    /// # Errors
+    /// [`SpringAssetError::Target`] for a target that is not a valid value of `P`.
+    pub fn sequence<P>(&self) -> Result<SpringSequence<P>, SpringAssetError>
+    where
+        P: SpringProperty,
+        ValueOf<P>: DeserializeOwned,
+    {
+        let mut sequence = SpringSequence::<P>::new()
+            .delayed(self.delay)
+            .repeat(self.repeat)
+            .on_interrupt(self.on_interrupt);
+        if self.ping_pong {
+            sequence = sequence.ping_pong();
+        }
+        for (index, step) in self.steps.iter().enumerate() {
+            let target: ValueOf<P> =
+                step.target
+                    .clone()
+                    .into_rust()
+                    .map_err(|error| SpringAssetError::Target {
+                        step: index,
+                        property: P::short_type_path(),
+                        message: error.to_string(),
+                    })?;
+            sequence = sequence.step(target, step.advance);
+            if let Some(spring) = step.spring {
+                sequence = sequence.with_spring(spring);
+            }
+        }
+        Ok(sequence)
+    }
+}
+
+/// Why a spring asset could not be read.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum SpringAssetError {
+    /// The file could not be read.
+    Io(std::io::Error),
+    /// The text is not a valid preset or choreography: syntax, an unknown field, invalid spring
+    /// parameters.
+    Ron(ron::error::SpannedError),
+    /// A choreography's target is not a value of the property it drives.
+    Target {
+        /// The step.
+        step: usize,
+        /// The property.
+        property: &'static str,
+        /// What is wrong with the value.
+        message: String,
+    },
+}
+
+impl fmt::Display for SpringAssetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Io(error) => write!(f, "could not read the file: {error}"),
+            Self::Ron(error) => write!(f, "{error}"),
+            Self::Target {
+                step,
+                property,
+                message,
+            } => write!(
+                f,
+                "the target of step {step} is not a value of property {property}: {message}"
+            ),
+        }
+    }
+}
+
+impl core::error::Error for SpringAssetError {}
+
+/// Loads `*.spring.ron` files as [`SpringPreset`]s.
+#[derive(Debug, Default, TypePath)]
+pub struct SpringPresetLoader;
+
+impl AssetLoader for SpringPresetLoader {
+    type Asset = SpringPreset;
+    type Settings = ();
+    type Error = SpringAssetError;
+
+    async fn load(
+        &self,
+        reader: &mut dyn Reader,
+        _settings: &(),
+        _context: &mut LoadContext<'_>,
+    ) -> Result<SpringPreset, SpringAssetError> {
+        let mut bytes = Vec::new();
+        reader
+            .read_to_end(&mut bytes)
+            .await
+            .map_err(SpringAssetError::Io)?;
+        SpringPreset::from_ron(&bytes)
+    }
+
+    fn extensions(&self) -> &[&str] {
+        &["spring.ron"]
+    }
+}
+
+/// Loads `*.sequence.ron` files as [`SequencePreset`]s.
+#[derive(Debug, Default, TypePath)]
+pub struct SequencePresetLoader;
+
+impl AssetLoader for SequencePresetLoader {
+    type Asset = SequencePreset;
+    type Settings = ();
+    type Error = SpringAssetError;
+
+    async fn load(
+        &self,
+        reader: &mut dyn Reader,
+        _settings: &(),
+        _context: &mut LoadContext<'_>,
+    ) -> Result<SequencePreset, SpringAssetError> {
+        let mut bytes = Vec::new();
+        reader
+            .read_to_end(&mut bytes)
+            .await
+            .map_err(SpringAssetError::Io)?;
+        SequencePreset::from_ron(&bytes)
+    }
+
+    fn extensions(&self) -> &[&str] {
+        &["sequence.ron"]
+    }
+}
+
+/// Gives the [`SpringPreset`] at this handle to every spring of the entity (each property's
+/// spring takes its parameters, and its rest tolerances if the preset sets them) when the
+/// preset loads, and again each time it changes (live, with Bevy's `file_watcher`).
+///
+/// # Example
+/// ```no_run
+/// use bevy::prelude::*;
+/// use bevy_sprung::asset::UseSpringPreset;
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn(mut commands: Commands, assets: Res<AssetServer>) {
+///     commands.spawn((
+///         Transform::default(),
+///         TranslationSpring::new(Spring::default(), Vec3::X * 100.0),
+///         UseSpringPreset(assets.load("springs/snappy.spring.ron")),
+///     ));
+/// }
+/// ```
+#[derive(Component, Reflect, Debug, Clone, PartialEq, Eq)]
+#[reflect(Component, Debug, Clone)]
+pub struct UseSpringPreset(pub Handle<SpringPreset>);
+
+/// Gives this entity the [`SpringSequence<P>`] that the [`SequencePreset`] at this handle
+/// describes, when it loads, and again (from the start) each time it changes.
+#[derive(Component, Reflect)]
+#[reflect(Component)]
+pub struct UseSequencePreset<P: SpringProperty> {
+    /// The choreography.
+    pub handle: Handle<SequencePreset>,
+    #[reflect(ignore)]
+    property: PhantomData<fn() -> P>,
+}
+
+impl<P: SpringProperty> UseSequencePreset<P> {
+    /// The choreography at `handle`, for property `P`.
+    #[must_use]
+    pub fn new(handle: Handle<SequencePreset>) -> Self {
+        Self {
+            handle,
+            property: PhantomData,
+        }
+    }
+}
+
+impl<P: SpringProperty> Clone for UseSequencePreset<P> {
+    fn clone(&self) -> Self {
+        Self::new(self.handle.clone())
+    }
+}
+
+impl<P: SpringProperty> fmt::Debug for UseSequencePreset<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("UseSequencePreset")
+            .field("property", &P::short_type_path())
+            .field("handle", &self.handle)
+            .finish()
+    }
+}
+
+/// Whether an asset changed this frame (loaded or modified), by id.
+fn changed<A: Asset>(events: &mut MessageReader<AssetEvent<A>>) -> Vec<AssetId<A>> {
+    events
+        .read()
+        .filter_map(|event| match event {
+            AssetEvent::LoadedWithDependencies { id } | AssetEvent::Modified { id } => Some(*id),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Gives presets that loaded or changed to the springs on property `P` that use them, and
+/// presets that are already loaded to springs that started using them.
+pub(crate) fn apply_presets<P, C>(
+    mut events: MessageReader<AssetEvent<SpringPreset>>,
+    presets: Res<Assets<SpringPreset>>,
+    mut springs: Query<(Ref<UseSpringPreset>, &mut C)>,
+) where
+    P: SpringProperty,
+    C: SpringControl<P>,
+{
+    let changed = changed(&mut events);
+    for (uses, mut spring) in &mut springs {
+        if !(uses.is_changed() || changed.contains(&uses.0.id())) {
+            continue;
+        }
+        if let Some(preset) = presets.get(&uses.0) {
+            spring.set_parameters(preset.spring);
+            if let Some(rest) = preset.rest {
+                spring.set_rest_threshold(rest);
+            }
+        }
+    }
+}
+
+/// Gives entities the sequence their [`SequencePreset`] describes for property `P`, when it
+/// loads or changes, or when they start using it.
+pub(crate) fn apply_sequence_presets<P>(
+    mut events: MessageReader<AssetEvent<SequencePreset>>,
+    presets: Option<Res<Assets<SequencePreset>>>,
+    uses: Query<(Entity, Ref<UseSequencePreset<P>>)>,
+    mut commands: Commands,
+) where
+    P: SpringProperty,
+    ValueOf<P>: DeserializeOwned,
+{
+    let Some(presets) = presets else {
+        return;
+    };
+    let changed = changed(&mut events);
+    for (entity, uses) in &uses {
+        if !(uses.is_changed() || changed.contains(&uses.handle.id())) {
+            continue;
+        }
+        let Some(preset) = presets.get(&uses.handle) else {
+            continue;
+        };
+        match preset.sequence::<P>() {
+            Ok(sequence) => {
+                commands.entity(entity).try_insert(sequence);
+            }
+            Err(error) => {
+                error!("bevy_sprung: a sequence preset cannot drive {entity}: {error}");
+            }
+        }
+    }
+}
+
+/// The asset types and their loaders (part of [`SpringPlugin`](crate::SpringPlugin) with
+/// feature `asset`). Presets apply to every property's springs; sequences from files need
+/// [`SequenceAssetPlugin<P>`] for their property (the built-in properties have it).
+#[derive(Debug, Default, Clone, Copy)]
+pub struct SpringAssetPlugin;
+
+impl Plugin for SpringAssetPlugin {
+    fn build(&self, app: &mut App) {
+        app.register_type::<UseSpringPreset>();
+    }
+
+    /// The assets are registered once every plugin is built, so that `AssetPlugin` (from
+    /// `DefaultPlugins`) may come before or after; an app without one has no assets to load
+    /// and gets none.
+    fn finish(&self, app: &mut App) {
+        if !app.world().contains_resource::<AssetServer>()
+            || app.world().contains_resource::<Assets<SpringPreset>>()
+        {
+            return;
+        }
+        app.init_asset::<SpringPreset>()
+            .init_asset::<SequencePreset>()
+            .init_asset_loader::<SpringPresetLoader>()
+            .init_asset_loader::<SequencePresetLoader>();
+    }
+
+    fn is_unique(&self) -> bool {
+        false
+    }
+}
+
+/// Sequences from `*.sequence.ron` files for property `P`, whose values must be readable from
+/// RON (`serde`). Adding it twice is harmless.
+pub struct SequenceAssetPlugin<P: SpringProperty>(PhantomData<fn() -> P>);
+
+impl<P: SpringProperty> Default for SequenceAssetPlugin<P> {
+    fn default() -> Self {
+        Self(PhantomData)
+    }
+}
+
+impl<P> Plugin for SequenceAssetPlugin<P>
+where
+    P: SpringProperty,
+    ValueOf<P>: DeserializeOwned,
+{
+    fn build(&self, app: &mut App) {
+        let schedule = crate::spring::spring_schedule(app);
+        app.register_type::<UseSequencePreset<P>>().add_systems(
+            schedule,
+            apply_sequence_presets::<P>
+                .before(crate::spring::PropertySystems::<P>::default())
+                .in_set(crate::spring::SpringSystems)
+                .run_if(any_with_component::<UseSequencePreset<P>>),
+        );
+    }
+
+    fn is_unique(&self) -> bool {
+        false
+    }
+}
+
+impl<P: SpringProperty> fmt::Debug for SequenceAssetPlugin<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "SequenceAssetPlugin<{}>", P::short_type_path())
+    }
+}
