@@ -82,6 +82,15 @@ pub mod visibility;
 
 pub use plugin::SpringPlugin;
 
+/// Guides: long-form documentation.
+pub mod guides {
+    /// From bevy_tweening to bevy_sprung: every bevy_tweening 0.16 feature and the code that
+    /// replaces it. (Its examples use the `ui` and `asset` features.)
+    #[cfg(all(feature = "ui", feature = "asset"))]
+    #[doc = include_str!("../docs/from-bevy-tweening.md")]
+    pub mod from_bevy_tweening {}
+}
+
 // The README's examples are compiled and run as doc tests.
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
