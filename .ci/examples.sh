@@ -32,7 +32,8 @@ for source in examples/*.rs; do
     out="$root/.ci/out/$name"
     rm -rf "$out" && mkdir -p "$out"
     start=$(date +%s)
-    if ! (cd "$out" && CI_TESTING_CONFIG="$config" timeout 900 \
+    # Examples load from the workspace's assets/ (cargo run sets this; a bare binary does not).
+    if ! (cd "$out" && BEVY_ASSET_ROOT="$root" CI_TESTING_CONFIG="$config" timeout 900 \
             xvfb-run -a -s "-screen 0 1280x800x24" "$binaries/$name" \
             > run.log 2>&1); then
         echo "$name: FAILED to run (log: .ci/out/$name/run.log)" >&2
