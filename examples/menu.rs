@@ -124,9 +124,14 @@ fn main() {
 
 fn setup(mut commands: Commands, assets: Res<AssetServer>) {
     commands.spawn(Camera2d);
-    let menu_spring = assets.load("springs/ui.spring.ron");
-    let panel_spring = assets.load("springs/gentle.spring.ron");
+    spawn_menu(&mut commands, &assets);
+    spawn_settings_panel(&mut commands, &assets);
+    spawn_status(&mut commands);
+}
 
+/// The title and the menu: a column of items, each starting off to the left and transparent.
+fn spawn_menu(commands: &mut Commands, assets: &AssetServer) {
+    let menu_spring = assets.load("springs/ui.spring.ron");
     commands.spawn((
         Text::new("sprung"),
         TextFont::from_font_size(56.0),
@@ -139,7 +144,6 @@ fn setup(mut commands: Commands, assets: Res<AssetServer>) {
         },
     ));
 
-    // The menu: a column of items, each starting off to the left and transparent.
     let column = commands
         .spawn(Node {
             position_type: PositionType::Absolute,
@@ -199,8 +203,10 @@ fn setup(mut commands: Commands, assets: Res<AssetServer>) {
         let item = item.id();
         commands.entity(column).add_child(item);
     }
+}
 
-    // The settings panel: off-screen to the right; its contents transparent.
+/// The settings panel: off-screen to the right, its contents transparent.
+fn spawn_settings_panel(commands: &mut Commands, assets: &AssetServer) {
     commands.spawn((
         SettingsPanel,
         Node {
@@ -217,7 +223,7 @@ fn setup(mut commands: Commands, assets: Res<AssetServer>) {
         BackgroundColor(PANEL),
         UiTransform::from_translation(Val2::px(PANEL_WIDTH, 0.0)),
         UiTranslationSpring::new(Spring::default(), Val2::px(PANEL_WIDTH, 0.0)),
-        UseSpringPreset(panel_spring),
+        UseSpringPreset(assets.load("springs/gentle.spring.ron")),
         children![
             panel_line("Settings", 34.0),
             panel_line("Music volume        80 %", 22.0),
@@ -226,7 +232,10 @@ fn setup(mut commands: Commands, assets: Res<AssetServer>) {
             panel_line("Close               Esc", 22.0),
         ],
     ));
+}
 
+/// The status line and the help line.
+fn spawn_status(commands: &mut Commands) {
     commands.spawn((
         Node {
             position_type: PositionType::Absolute,
@@ -324,15 +333,15 @@ fn hover_items(
             // Spawned unhovered: the fly-in owns the colour.
             continue;
         }
-        if !hovered.0 {
+        if hovered.0 {
+            background.set_target(ITEM_HOVERED);
+            scale.set_target(Vec2::splat(1.06));
+        } else {
             background.set_target(ITEM);
             scale.set_target(Vec2::ONE);
             if let Some(mut pulse) = pulse {
                 pulse.resume();
             }
-        } else {
-            background.set_target(ITEM_HOVERED);
-            scale.set_target(Vec2::splat(1.06));
         }
     }
 }
