@@ -14,7 +14,12 @@ macro_rules! forward {
     )*};
 }
 
-forward!(exp, exp_m1, ln, sin, sqrt);
+forward!(exp, exp_m1, ln, ln_1p, sin, sqrt);
+
+#[inline]
+pub(crate) fn atan2(y: f64, x: f64) -> f64 {
+    Float::atan2(y, x)
+}
 
 #[inline]
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {

@@ -379,3 +379,68 @@ fn rest_threshold() {
     let free = Spring::<f32>::new(1.0, 0.0, 0.0).unwrap();
     assert_eq!(RestThreshold::for_spring(&free, 0.5).speed, 0.5);
 }
+
+/// The impulse response `f1(t)` sampled densely around the claimed peak never exceeds it, and
+/// the peak is attained (within the sampling's resolution), in every regime: under-damped,
+/// critical, one ulp either side of critical, over-damped up to ζ = 1e4, and without stiffness.
+#[test]
+fn impulse_peak_is_the_maximum_of_the_impulse_response() {
+    let mut springs: Vec<Spring<f64>> = [
+        0.0, 0.05, 0.3, 0.7, 0.999_999, 1.0, 1.000_001, 1.5, 5.0, 50.0, 1e4,
+    ]
+    .iter()
+    .flat_map(|&zeta| {
+        [0.5, 10.0, 300.0].map(|omega| Spring::from_natural_frequency(omega, zeta).unwrap())
+    })
+    .collect();
+    let critical = Spring::<f64>::new(2.0, 50.0, 20.0).unwrap();
+    let c = critical.damping();
+    springs.push(critical);
+    springs.push(Spring::new(2.0, 50.0, f64::from_bits(c.to_bits() + 1)).unwrap());
+    springs.push(Spring::new(2.0, 50.0, f64::from_bits(c.to_bits() - 1)).unwrap());
+    for spring in springs {
+        let peak = spring.impulse_peak().unwrap();
+        // The peak lies before 2/ω for every damping (π/(2ω) without damping).
+        let end = 2.0 / spring.natural_frequency();
+        let samples = 20_000;
+        let sampled = (0..=samples)
+            .map(|i| {
+                spring
+                    .transition(end * f64::from(i) / f64::from(samples))
+                    .matrix()[0][1]
+            })
+            .fold(f64::MIN, f64::max);
+        assert!(
+            sampled <= peak * (1.0 + 1e-12),
+            "{spring:?}: {sampled} > {peak}"
+        );
+        assert!(
+            sampled >= peak * (1.0 - 1e-6),
+            "{spring:?}: {sampled} << {peak}"
+        );
+    }
+    // No stiffness: the supremum m/c; neither stiffness nor damping: unbounded.
+    assert_relative_eq!(
+        Spring::<f64>::new(2.0, 0.0, 8.0)
+            .unwrap()
+            .impulse_peak()
+            .unwrap(),
+        0.25
+    );
+    assert_eq!(
+        Spring::<f64>::new(2.0, 0.0, 0.0).unwrap().impulse_peak(),
+        None
+    );
+    // f32 springs: the same peak, rounded once.
+    let spring = Spring::<f32>::bouncy();
+    let wide = Spring::<f64>::new(
+        f64::from(spring.mass()),
+        f64::from(spring.stiffness()),
+        f64::from(spring.damping()),
+    )
+    .unwrap();
+    assert_eq!(
+        spring.impulse_peak().unwrap(),
+        wide.impulse_peak().unwrap() as f32
+    );
+}

@@ -64,6 +64,51 @@ impl<T: Scalar> Spring<T> {
         Some(T::from_f64(t))
     }
 
+    /// The largest displacement that a unit change of velocity gives a spring resting on its
+    /// target: the peak of the impulse response `x(t) = f1(t)` (the transition's upper right
+    /// entry). A kick of `d / impulse_peak()` swings the spring out by exactly `d` before it
+    /// returns: a *punch* measured in distance instead of velocity.
+    ///
+    /// The peak is at `t* = atan2(κ, b)/κ` below critical damping, `1/ω` at it, and
+    /// `ln(λ₂/λ₁)/(λ₂ − λ₁) = ln1p((b − ω + s)/ω)/s` above it (the ratio of the two rates formed
+    /// from `b + s` without subtracting, and `b − ω` exact near critical damping, where `s` is
+    /// small); `f1(t*)` is then the exact transition entry. Without stiffness the response only
+    /// approaches its supremum `m/c`, which is returned; `None` when the spring has neither
+    /// stiffness nor damping (a kick then carries it away for ever).
+    ///
+    /// # Example
+    /// ```
+    /// use sprung::Spring;
+    /// let spring = Spring::<f64>::from_natural_frequency(10.0, 1.0)?;
+    /// // Critically damped: the peak is at t = 1/ω and equals 1/(e·ω).
+    /// let peak = spring.impulse_peak().unwrap();
+    /// assert!((peak - 1.0 / (10.0 * std::f64::consts::E)).abs() < 1e-15);
+    /// # Ok::<(), sprung::SpringError>(())
+    /// ```
+    #[must_use]
+    pub fn impulse_peak(&self) -> Option<T> {
+        let (m, k, c) = (
+            self.mass.to_f64(),
+            self.stiffness.to_f64(),
+            self.damping.to_f64(),
+        );
+        let b = c / m / 2.0;
+        let w = crate::math::sqrt(k / m);
+        if w <= 0.0 {
+            return (b > 0.0).then(|| T::from_f64(0.5 / b));
+        }
+        let peak_time = if b < w {
+            let kappa = modes::damped_frequency(b, w);
+            crate::math::atan2(kappa, b) / kappa
+        } else if b > w {
+            let s = modes::overdamped_split(b, w);
+            crate::math::ln_1p(((b - w) + s) / w) / s
+        } else {
+            1.0 / w
+        };
+        Some(T::from_f64(self.coefficients(peak_time).f1))
+    }
+
     /// The decay rate of the slowest mode in 1/s: `b = c/(2m)` up to critical damping and the
     /// slow rate `λ = b − √(b² − ω²)` (formed without cancellation) beyond it. 0 for undamped
     /// and unsprung springs (whose offset never decays).
