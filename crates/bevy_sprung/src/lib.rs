@@ -68,6 +68,9 @@ pub mod control;
 #[cfg(feature = "curve")]
 pub mod curve;
 pub mod follow;
+#[cfg(feature = "picking")]
+pub mod interaction;
+pub mod juice;
 mod plugin;
 pub mod property;
 pub mod reduced_motion;
@@ -120,6 +123,12 @@ pub mod prelude {
         BackgroundColorSpring, BorderColorSpring, ImageColorSpring, TextColorSpring,
     };
     pub use crate::follow::{SpringFollow, TargetMotion};
+    #[cfg(feature = "picking")]
+    pub use crate::interaction::{
+        DragBounds, DragFollow, DragReleased, InteractionState, InteractionTargets, Snap,
+        SnapLine, SpringDrag,
+    };
+    pub use crate::juice::{Conserve, Shake, SquashStretch};
     pub use crate::property::SpringProperty;
     pub use crate::reduced_motion::{KeepMotion, ReducedMotion};
     #[cfg(feature = "color")]

@@ -7,6 +7,7 @@ use bevy::prelude::*;
 use crate::choreography::ChoreographyPlugin;
 use crate::clock::{SpringClock, SpringClockPlugin};
 use crate::follow::FollowPlugin;
+use crate::juice::JuicePlugin;
 use crate::reduced_motion::ReducedMotionPlugin;
 use crate::spin::SpinPlugin;
 use crate::spring::SpringSchedulePlugin;
@@ -87,6 +88,7 @@ impl Plugin for SpringPlugin {
             FollowPlugin,
             ReducedMotionPlugin,
             ChoreographyPlugin,
+            JuicePlugin,
         ));
         #[cfg(feature = "color")]
         app.add_plugins(crate::color::ColorSpringPlugin);
@@ -96,5 +98,7 @@ impl Plugin for SpringPlugin {
         app.add_plugins(crate::visibility::CatchUpPlugin);
         #[cfg(feature = "asset")]
         app.add_plugins(crate::asset::SpringAssetPlugin);
+        #[cfg(feature = "picking")]
+        app.add_plugins(crate::interaction::InteractionPlugin);
     }
 }

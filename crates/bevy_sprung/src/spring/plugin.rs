@@ -186,6 +186,16 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
         if let Some(previous) = previous {
             app.configure_sets(schedule, PropertySystems::<P>::default().after(previous));
         }
+        // Pointer states retarget every property's springs, before sequences drive them.
+        #[cfg(feature = "picking")]
+        app.register_type::<crate::interaction::InteractionTargets<P>>()
+            .add_systems(
+                schedule,
+                crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>
+                    .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>)
+                    .in_set(PropertySystems::<P>::default())
+                    .run_if(any_with_component::<crate::interaction::InteractionTargets<P>>),
+            );
         // Presets from files reach every property's springs, before they are driven or step.
         #[cfg(feature = "asset")]
         app.add_systems(

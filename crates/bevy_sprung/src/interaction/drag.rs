@@ -1,0 +1,705 @@
+//! Drag and fling: follow the pointer, then spring to a snap point with the throw's velocity.
+
+use bevy::ecs::system::SystemParam;
+use bevy::log::warn_once;
+use bevy::math::primitives::InfinitePlane3d;
+use bevy::picking::events::{Drag, DragEnd, DragStart, Pointer};
+use bevy::picking::pointer::{Location, PointerButton, PointerId};
+use bevy::prelude::*;
+use sprung::Spring;
+
+use super::InteractionState;
+use super::velocity::ReleaseVelocity;
+use crate::transform::TranslationSpring;
+#[cfg(feature = "ui")]
+use crate::ui::UiTranslationSpring;
+
+/// How a dragged entity follows the pointer.
+#[derive(Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Debug, PartialEq, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum DragFollow {
+    /// Glued to the pointer (at the point where it was grabbed).
+    Exact,
+    /// Through this spring, retargeted to the pointer: a card that trails a little behind a
+    /// fast pointer ([`Spring::stiff`] is a tight choice).
+    Spring(Spring<f32>),
+}
+
+/// A line a fling can snap onto: the point of it nearest the throw's resting place.
+#[derive(Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Debug, PartialEq, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SnapLine {
+    /// A point of the line.
+    pub origin: Vec3,
+    /// Its direction (any length; zero makes the line its origin).
+    pub direction: Vec3,
+}
+
+impl SnapLine {
+    /// The point of the line nearest `point`.
+    #[must_use]
+    pub fn nearest(&self, point: Vec3) -> Vec3 {
+        let length_squared = self.direction.length_squared();
+        if length_squared > 0.0 && length_squared.is_finite() {
+            self.origin + self.direction * ((point - self.origin).dot(self.direction) / length_squared)
+        } else {
+            self.origin
+        }
+    }
+}
+
+/// Where a released entity springs to, chosen from where its throw would come to rest (the
+/// release position plus the release velocity times [`SpringDrag::throw`]).
+#[derive(Reflect, Debug, Clone, PartialEq)]
+#[reflect(Debug, PartialEq, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Snap {
+    /// Where the throw comes to rest (within the bounds): a free throw, or a scroll panel's
+    /// momentum.
+    Free,
+    /// Back home ([`SpringDrag::home`]) whatever the throw.
+    Home,
+    /// The nearest of these points (a slot, a card pile).
+    Points(Vec<Vec3>),
+    /// The nearest point of the nearest of these lines (a track, a shelf).
+    Lines(Vec<SnapLine>),
+    /// The nearest point of a grid: `origin + spacing·n` per axis (an axis with spacing 0 is
+    /// free).
+    Grid {
+        /// A grid point.
+        origin: Vec3,
+        /// The cell size per axis.
+        spacing: Vec3,
+    },
+}
+
+impl Snap {
+    /// The snap target for a throw coming to rest at `projected`, and the index of the point or
+    /// line it chose; `home` when there is nothing to snap to.
+    #[must_use]
+    pub fn choose(&self, projected: Vec3, home: Vec3) -> (Vec3, Option<usize>) {
+        let nearest = |candidates: &mut dyn Iterator<Item = Vec3>| {
+            candidates
+                .enumerate()
+                .map(|(index, point)| (point.distance_squared(projected), index, point))
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+                .map_or((home, None), |(_, index, point)| (point, Some(index)))
+        };
+        match self {
+            Self::Free => (projected, None),
+            Self::Home => (home, None),
+            Self::Points(points) => nearest(&mut points.iter().copied()),
+            Self::Lines(lines) => nearest(&mut lines.iter().map(|line| line.nearest(projected))),
+            Self::Grid { origin, spacing } => {
+                let snap = |p: f32, o: f32, s: f32| {
+                    if s > 0.0 && s.is_finite() {
+                        o + ((p - o) / s).round() * s
+                    } else {
+                        p
+                    }
+                };
+                (
+                    Vec3::new(
+                        snap(projected.x, origin.x, spacing.x),
+                        snap(projected.y, origin.y, spacing.y),
+                        snap(projected.z, origin.z, spacing.z),
+                    ),
+                    None,
+                )
+            }
+        }
+    }
+}
+
+/// A box a dragged entity stays in: dragged past an edge it follows the pointer less and
+/// less (a rubber band, as iOS scroll views), and released it springs back inside.
+#[derive(Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Debug, PartialEq, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct DragBounds {
+    /// The lower corner.
+    pub min: Vec3,
+    /// The upper corner.
+    pub max: Vec3,
+    /// How far past an edge the entity can be pulled, at most (approached as the pointer goes
+    /// on; 0 is a hard edge).
+    pub give: f32,
+}
+
+impl DragBounds {
+    /// Where an entity the pointer would put at `position` is shown: inside, exactly there;
+    /// past an edge by `e`, at `give·(1 − 1/(1 + 0.55·e/give))` past it (it starts at 0.55 of
+    /// the pointer's speed and never reaches `give`).
+    #[must_use]
+    pub fn rubber_band(&self, position: Vec3) -> Vec3 {
+        let band = |x: f32, lo: f32, hi: f32| {
+            let excess = if x < lo {
+                x - lo
+            } else if x > hi {
+                x - hi
+            } else {
+                return x;
+            };
+            let edge = if excess < 0.0 { lo } else { hi };
+            if self.give > 0.0 && self.give.is_finite() {
+                let e = excess.abs();
+                let shown = self.give * (1.0 - 1.0 / (1.0 + 0.55 * e / self.give));
+                edge + shown.copysign(excess)
+            } else {
+                edge
+            }
+        };
+        Vec3::new(
+            band(position.x, self.min.x, self.max.x),
+            band(position.y, self.min.y, self.max.y),
+            band(position.z, self.min.z, self.max.z),
+        )
+    }
+
+    /// `position` clamped into the box.
+    #[must_use]
+    pub fn clamp(&self, position: Vec3) -> Vec3 {
+        position.clamp(self.min.min(self.max), self.max.max(self.min))
+    }
+}
+
+/// Makes its entity draggable with the primary button, and flings it on release: it follows
+/// the pointer while dragged ([`DragFollow`]), and when let go keeps the pointer's velocity
+/// (estimated over the last 100 ms, [`ReleaseVelocity`]) and springs to the [`Snap`] target
+/// nearest to where the throw would come to rest, or home. [`DragBounds`] keep it in a box
+/// with rubber-band edges. [`DragReleased`] is triggered on release.
+///
+/// It moves the entity's spring, which it needs beside it:
+/// - a [`TranslationSpring`] (world space: sprites, meshes; positions are the `Transform`'s,
+///   in its parent's space). The pointer is projected through the camera that picked the
+///   entity onto the plane through the entity facing that camera;
+/// - or, with the `ui` feature, a [`UiTranslationSpring`](crate::ui::UiTranslationSpring)
+///   (UI nodes; positions are `UiTransform::translation` in logical pixels, `z` unused).
+///
+/// The spring's own parameters are the release motion's (or [`release_spring`]'s); the state
+/// becomes [`InteractionState::Dragged`] while dragged, so [`InteractionTargets`] can lift
+/// and tint it.
+///
+/// [`release_spring`]: Self::release_spring
+/// [`InteractionTargets`]: super::InteractionTargets
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::interaction::{Snap, SpringDrag};
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn_card(mut commands: Commands) {
+///     let slots = vec![Vec3::new(-200.0, 0.0, 0.0), Vec3::new(200.0, 0.0, 0.0)];
+///     commands.spawn((
+///         Sprite::from_color(Color::WHITE, Vec2::new(80.0, 120.0)),
+///         Transform::default(),
+///         TranslationSpring::new(Spring::bouncy(), Vec3::ZERO),
+///         SpringDrag::new().snapping(Snap::Points(slots)).within(150.0),
+///     ));
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn_card);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Clone)]
+#[reflect(Component, Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[require(InteractionState)]
+pub struct SpringDrag {
+    /// How it follows the pointer.
+    pub follow: DragFollow,
+    /// Where a release springs it to.
+    pub snap: Snap,
+    /// Snap only to a target within this distance of the throw's resting place; farther, go
+    /// home. `None`: any distance.
+    pub snap_radius: Option<f32>,
+    /// The box it stays in.
+    pub bounds: Option<DragBounds>,
+    /// The throw: seconds of the release velocity added to the release position to find where
+    /// the throw would rest (0.3 s by default; 0 snaps from where it was let go).
+    pub throw: f32,
+    /// Home: where a release with nothing to snap to goes. `None`: the spring's target when the
+    /// drag began (where it rested or was heading).
+    pub home: Option<Vec3>,
+    /// The spring for the release motion. `None`: the spring's own parameters.
+    pub release_spring: Option<Spring<f32>>,
+    #[reflect(ignore)]
+    #[cfg_attr(feature = "serde", serde(skip))]
+    state: DragState,
+}
+
+/// A drag in progress.
+#[derive(Debug, Clone, Default)]
+struct DragState {
+    active: Option<ActiveDrag>,
+    path: ReleaseVelocity,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct ActiveDrag {
+    pointer: PointerId,
+    space: DragSpace,
+    /// The entity's position minus the pointer's, in the drag space.
+    grab: Vec3,
+    /// Where a release with nothing to snap to goes.
+    home: Vec3,
+    /// The spring's parameters before the drag, for the release.
+    spring: Spring<f32>,
+}
+
+/// The space a drag moves its entity in.
+#[derive(Debug, Clone, Copy)]
+enum DragSpace {
+    /// The `Transform`'s translation; the pointer is projected through `camera` onto the plane
+    /// through `origin` (world) with normal `normal`.
+    World {
+        camera: Entity,
+        origin: Vec3,
+        normal: Vec3,
+    },
+    /// `UiTransform::translation`, in logical pixels.
+    #[cfg(feature = "ui")]
+    Ui,
+}
+
+impl Default for SpringDrag {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SpringDrag {
+    /// Glued to the pointer, springing home on release (add a [`Snap`] with
+    /// [`snapping`](Self::snapping)), with a 0.3 s throw.
+    #[must_use]
+    pub fn new() -> Self {
+        Self {
+            follow: DragFollow::Exact,
+            snap: Snap::Home,
+            snap_radius: None,
+            bounds: None,
+            throw: 0.3,
+            home: None,
+            release_spring: None,
+            state: DragState::default(),
+        }
+    }
+
+    /// The same, following the pointer as `follow` says.
+    #[must_use]
+    pub fn following(mut self, follow: DragFollow) -> Self {
+        self.follow = follow;
+        self
+    }
+
+    /// The same, snapping as `snap` says.
+    #[must_use]
+    pub fn snapping(mut self, snap: Snap) -> Self {
+        self.snap = snap;
+        self
+    }
+
+    /// The same, snapping only within `radius` of the throw's resting place (home otherwise).
+    #[must_use]
+    pub fn within(mut self, radius: f32) -> Self {
+        self.snap_radius = Some(radius);
+        self
+    }
+
+    /// The same, kept in `bounds`.
+    #[must_use]
+    pub fn bounded(mut self, bounds: DragBounds) -> Self {
+        self.bounds = Some(bounds);
+        self
+    }
+
+    /// The same, with a throw of `seconds`.
+    #[must_use]
+    pub fn with_throw(mut self, seconds: f32) -> Self {
+        self.throw = seconds;
+        self
+    }
+
+    /// The same, with a fixed home.
+    #[must_use]
+    pub fn with_home(mut self, home: Vec3) -> Self {
+        self.home = Some(home);
+        self
+    }
+
+    /// The same, releasing with `spring`.
+    #[must_use]
+    pub fn releasing_with(mut self, spring: Spring<f32>) -> Self {
+        self.release_spring = Some(spring);
+        self
+    }
+
+    /// Whether a pointer is dragging it.
+    #[must_use]
+    pub fn is_dragged(&self) -> bool {
+        self.state.active.is_some()
+    }
+
+    /// Where the release target is for a release at `position` with `velocity`: the throw's
+    /// resting place (in the bounds), the snap target chosen from it, and the snap's index.
+    #[must_use]
+    pub fn release_target(
+        &self,
+        position: Vec3,
+        velocity: Vec3,
+        home: Vec3,
+    ) -> (Vec3, Vec3, Option<usize>) {
+        let throw = if self.throw.is_finite() { self.throw.max(0.0) } else { 0.0 };
+        let mut projected = position + velocity * throw;
+        if let Some(bounds) = self.bounds {
+            projected = bounds.clamp(projected);
+        }
+        let (target, snapped) = self.snap.choose(projected, home);
+        match self.snap_radius {
+            Some(radius) if target.distance(projected) > radius => (projected, home, None),
+            _ => (projected, target, snapped),
+        }
+    }
+}
+
+/// Triggered on an entity with a [`SpringDrag`] when it is let go: with the release velocity,
+/// where the throw would have come to rest, the target it springs to, and the index of the
+/// snap point or line it chose (`None`: home, free or a grid).
+#[derive(EntityEvent, Debug, Clone, Copy, PartialEq)]
+pub struct DragReleased {
+    /// The entity released.
+    pub entity: Entity,
+    /// The pointer's velocity at release, in the drag space's units per second.
+    pub velocity: Vec3,
+    /// Where the throw would have come to rest (in the bounds).
+    pub projected: Vec3,
+    /// Where the spring now takes it.
+    pub target: Vec3,
+    /// The snap point or line chosen.
+    pub snapped: Option<usize>,
+}
+
+/// What the drag observers need besides the dragged entity.
+#[derive(SystemParam)]
+struct DragContext<'w, 's> {
+    time: Res<'w, Time<Real>>,
+    cameras: Query<'w, 's, (&'static Camera, &'static GlobalTransform)>,
+    globals: Query<'w, 's, &'static GlobalTransform>,
+    #[cfg(feature = "ui")]
+    ui_scale: Option<Res<'w, UiScale>>,
+}
+
+impl DragContext<'_, '_> {
+    fn now(&self) -> f64 {
+        self.time.elapsed_secs_f64()
+    }
+
+    /// The pointer at `location` in `space` (for world space, in the space of `parent`).
+    fn pointer(&self, space: DragSpace, location: &Location, parent: Option<Entity>) -> Option<Vec3> {
+        match space {
+            DragSpace::World {
+                camera,
+                origin,
+                normal,
+            } => {
+                let (camera, camera_transform) = self.cameras.get(camera).ok()?;
+                let ray = camera
+                    .viewport_to_world(camera_transform, location.position)
+                    .ok()?;
+                let plane = InfinitePlane3d::new(normal);
+                let distance = ray.intersect_plane(origin, plane)?;
+                let world = ray.get_point(distance);
+                Some(match parent.and_then(|parent| self.globals.get(parent).ok()) {
+                    Some(parent) => parent.affine().inverse().transform_point3(world),
+                    None => world,
+                })
+            }
+            #[cfg(feature = "ui")]
+            DragSpace::Ui => {
+                let scale = self.ui_scale.as_ref().map_or(1.0, |scale| scale.0);
+                (scale > 0.0).then(|| (location.position / scale).extend(0.0))
+            }
+        }
+    }
+}
+
+/// The dragged entity: its drag, and the spring and value it moves.
+#[cfg(feature = "ui")]
+type Body = (
+    &'static mut SpringDrag,
+    Option<&'static mut TranslationSpring>,
+    Option<&'static mut Transform>,
+    Option<&'static mut UiTranslationSpring>,
+    Option<&'static mut UiTransform>,
+    Option<&'static ChildOf>,
+    Option<&'static GlobalTransform>,
+);
+#[cfg(not(feature = "ui"))]
+type Body = (
+    &'static mut SpringDrag,
+    Option<&'static mut TranslationSpring>,
+    Option<&'static mut Transform>,
+    Option<&'static ChildOf>,
+    Option<&'static GlobalTransform>,
+);
+
+/// A UI translation in pixels (another unit counts as 0: drags move pixels).
+#[cfg(feature = "ui")]
+fn pixels(value: Val2) -> Vec3 {
+    let px = |v: Val| if let Val::Px(x) = v { x } else { 0.0 };
+    Vec3::new(px(value.x), px(value.y), 0.0)
+}
+
+/// One body's spring and value, whichever space it lives in.
+enum Moved<'a> {
+    World(Mut<'a, TranslationSpring>, Mut<'a, Transform>),
+    #[cfg(feature = "ui")]
+    Ui(Mut<'a, UiTranslationSpring>, Mut<'a, UiTransform>),
+}
+
+impl Moved<'_> {
+    fn position(&self) -> Vec3 {
+        match self {
+            Self::World(_, transform) => transform.translation,
+            #[cfg(feature = "ui")]
+            Self::Ui(_, transform) => pixels(transform.translation),
+        }
+    }
+
+    fn target(&self) -> Vec3 {
+        match self {
+            Self::World(spring, _) => spring.target(),
+            #[cfg(feature = "ui")]
+            Self::Ui(spring, _) => pixels(spring.target()),
+        }
+    }
+
+    fn spring(&self) -> Spring<f32> {
+        match self {
+            Self::World(spring, _) => *spring.spring(),
+            #[cfg(feature = "ui")]
+            Self::Ui(spring, _) => *spring.spring(),
+        }
+    }
+
+    fn set_spring(&mut self, parameters: Spring<f32>) {
+        match self {
+            Self::World(spring, _) => spring.set_spring(parameters),
+            #[cfg(feature = "ui")]
+            Self::Ui(spring, _) => spring.set_spring(parameters),
+        }
+    }
+
+    /// Retargets with `velocity` (`None`: keep it).
+    fn retarget(&mut self, target: Vec3, velocity: Option<Vec3>) {
+        match self {
+            Self::World(spring, _) => {
+                spring.set_target(target);
+                if let Some(velocity) = velocity {
+                    spring.set_velocity(velocity);
+                }
+            }
+            #[cfg(feature = "ui")]
+            Self::Ui(spring, _) => {
+                spring.set_target(Val2::px(target.x, target.y));
+                if let Some(velocity) = velocity {
+                    spring.set_velocity(velocity.truncate());
+                }
+            }
+        }
+    }
+
+    /// Puts the value at `position` and the spring's target with it, without waking the
+    /// spring (asleep, it does not pull against the pointer).
+    fn glue(&mut self, position: Vec3) {
+        match self {
+            Self::World(spring, transform) => {
+                transform.translation = position;
+                spring.bypass_change_detection().set_target(position);
+            }
+            #[cfg(feature = "ui")]
+            Self::Ui(spring, transform) => {
+                let value = Val2::px(position.x, position.y);
+                transform.translation = value;
+                spring.bypass_change_detection().set_target(value);
+            }
+        }
+    }
+}
+
+/// The drag, what it moves, and the entity's parent and place.
+fn body<'a>(
+    item: bevy::ecs::query::QueryItem<'a, '_, Body>,
+) -> (
+    Mut<'a, SpringDrag>,
+    Option<Moved<'a>>,
+    Option<Entity>,
+    Option<Vec3>,
+) {
+    #[cfg(feature = "ui")]
+    let (drag, spring, transform, ui_spring, ui_transform, parent, global) = item;
+    #[cfg(not(feature = "ui"))]
+    let (drag, spring, transform, parent, global) = item;
+    let moved = match (spring, transform) {
+        (Some(spring), Some(transform)) => Some(Moved::World(spring, transform)),
+        #[cfg(feature = "ui")]
+        _ => match (ui_spring, ui_transform) {
+            (Some(spring), Some(transform)) => Some(Moved::Ui(spring, transform)),
+            _ => None,
+        },
+        #[cfg(not(feature = "ui"))]
+        _ => None,
+    };
+    (
+        drag,
+        moved,
+        parent.map(ChildOf::parent),
+        global.map(GlobalTransform::translation),
+    )
+}
+
+fn start_drag(event: On<Pointer<DragStart>>, context: DragContext, mut bodies: Query<Body>) {
+    if event.button != PointerButton::Primary {
+        return;
+    }
+    let Ok(item) = bodies.get_mut(event.entity) else {
+        return;
+    };
+    let (mut drag, moved, parent, world_position) = body(item);
+    let Some(mut moved) = moved else {
+        warn_once!(
+            "bevy_sprung: a SpringDrag needs a TranslationSpring (or a UiTranslationSpring) \
+             beside it"
+        );
+        return;
+    };
+    if drag.state.active.is_some() {
+        return;
+    }
+    let space = match moved {
+        Moved::World(..) => {
+            let Ok((_, camera)) = context.cameras.get(event.hit.camera) else {
+                return;
+            };
+            DragSpace::World {
+                camera: event.hit.camera,
+                origin: world_position.unwrap_or(moved.position()),
+                normal: camera.back().as_vec3(),
+            }
+        }
+        #[cfg(feature = "ui")]
+        Moved::Ui(..) => DragSpace::Ui,
+    };
+    let Some(pointer) = context.pointer(space, &event.pointer_location, parent) else {
+        warn_once!("bevy_sprung: could not place the pointer for a drag (camera not ready?)");
+        return;
+    };
+    let position = moved.position();
+    let home = drag.home.unwrap_or_else(|| moved.target());
+    let spring = moved.spring();
+    let drag = drag.as_mut();
+    drag.state.active = Some(ActiveDrag {
+        pointer: event.pointer_id,
+        space,
+        grab: position - pointer,
+        home,
+        spring,
+    });
+    drag.state.path.clear();
+    drag.state.path.record(context.now(), position);
+    match drag.follow {
+        // Stop where it is: the spring settles and sleeps, and the pointer moves the value.
+        DragFollow::Exact => moved.retarget(position, Some(Vec3::ZERO)),
+        DragFollow::Spring(follow) => moved.set_spring(follow),
+    }
+}
+
+/// Where the pointer at `location` puts the dragged entity (rubber-banded at the bounds).
+fn dragged_position(
+    drag: &SpringDrag,
+    active: ActiveDrag,
+    context: &DragContext,
+    location: &Location,
+    parent: Option<Entity>,
+) -> Option<Vec3> {
+    let position = context.pointer(active.space, location, parent)? + active.grab;
+    Some(match drag.bounds {
+        Some(bounds) => bounds.rubber_band(position),
+        None => position,
+    })
+}
+
+fn continue_drag(event: On<Pointer<Drag>>, context: DragContext, mut bodies: Query<Body>) {
+    let Ok(item) = bodies.get_mut(event.entity) else {
+        return;
+    };
+    let (mut drag, moved, parent, _) = body(item);
+    let (Some(mut moved), Some(active)) = (moved, drag.state.active) else {
+        return;
+    };
+    if active.pointer != event.pointer_id {
+        return;
+    }
+    let Some(position) =
+        dragged_position(&drag, active, &context, &event.pointer_location, parent)
+    else {
+        return;
+    };
+    drag.state.path.record(context.now(), position);
+    match drag.follow {
+        DragFollow::Exact => moved.glue(position),
+        DragFollow::Spring(_) => moved.retarget(position, None),
+    }
+}
+
+fn end_drag(
+    event: On<Pointer<DragEnd>>,
+    context: DragContext,
+    mut commands: Commands,
+    mut bodies: Query<Body>,
+) {
+    let Ok(item) = bodies.get_mut(event.entity) else {
+        return;
+    };
+    let (mut drag, moved, parent, _) = body(item);
+    let (Some(mut moved), Some(active)) = (moved, drag.state.active) else {
+        return;
+    };
+    if active.pointer != event.pointer_id {
+        return;
+    }
+    let now = context.now();
+    if let Some(position) =
+        dragged_position(&drag, active, &context, &event.pointer_location, parent)
+    {
+        drag.state.path.record(now, position);
+    }
+    let velocity = drag.state.path.velocity(now);
+    let (projected, target, snapped) =
+        drag.release_target(moved.position(), velocity, active.home);
+    moved.set_spring(drag.release_spring.unwrap_or(active.spring));
+    moved.retarget(target, Some(velocity));
+    drag.state.active = None;
+    drag.state.path.clear();
+    commands.trigger(DragReleased {
+        entity: event.entity,
+        velocity,
+        projected,
+        target,
+        snapped,
+    });
+}
+
+pub(super) fn build(app: &mut App) {
+    app.register_type::<SpringDrag>()
+        .register_type::<DragFollow>()
+        .register_type::<Snap>()
+        .register_type::<SnapLine>()
+        .register_type::<DragBounds>()
+        .add_observer(start_drag)
+        .add_observer(continue_drag)
+        .add_observer(end_drag);
+}

@@ -1,0 +1,53 @@
+//! Juice: the small physical reactions that make a game feel alive, each one opt-in component
+//! (or one call) driven by springs.
+//!
+//! - **Punch**: [`PropertySpring::punch`](crate::spring::PropertySpring::punch) kicks any
+//!   property spring so that it swings out by a given distance and returns — a scale pop, a
+//!   rotation wobble, a UI offset nudge.
+//! - **Shake**: [`Shake`] moves an entity (a camera) by seeded noise filtered through a spring,
+//!   scaled by a decaying trauma: the same shake at any frame rate, added on top of whatever
+//!   else moves the entity ([`SpringFollow`](crate::follow::SpringFollow) included) and
+//!   removed before it runs again, so the two never fight.
+//! - **Squash & stretch**: [`SquashStretch`] stretches an entity along its velocity and
+//!   squashes it on impact, keeping its volume (or area), and returns to rest through its own
+//!   spring.
+//!
+//! Entities without these components cost nothing: the systems run only while some entity has
+//! one, and iterate only those.
+
+mod punch;
+mod shake;
+mod squash;
+
+pub use shake::Shake;
+pub use squash::{Conserve, SquashStretch};
+
+use bevy::app::AnimationSystems;
+use bevy::prelude::*;
+use bevy::transform::TransformSystems;
+
+/// The juice systems that write `Transform`s: in `PostUpdate`, after the springs
+/// (`AnimationSystems`) and before transform propagation. [`SquashStretch`] runs first, then
+/// the [`Shake`]s are added. (A shake is taken off again in `PreUpdate`.)
+#[derive(SystemSet, Debug, Clone, PartialEq, Eq, Hash)]
+pub struct JuiceSystems;
+
+/// [`Shake`] and [`SquashStretch`] (part of [`SpringPlugin`](crate::SpringPlugin)): both run in
+/// `PostUpdate` after the springs (`AnimationSystems`) and before transform propagation, in
+/// [`JuiceSystems`]; a shake is taken off again in `PreUpdate`, before gameplay reads or writes
+/// the `Transform`.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct JuicePlugin;
+
+impl Plugin for JuicePlugin {
+    fn build(&self, app: &mut App) {
+        app.configure_sets(
+            PostUpdate,
+            JuiceSystems
+                .after(AnimationSystems)
+                .before(TransformSystems::Propagate),
+        );
+        shake::build(app);
+        squash::build(app);
+    }
+}

@@ -1,0 +1,255 @@
+//! Squash & stretch along the velocity, volume (or area) preserved.
+
+use bevy::log::warn_once;
+use bevy::prelude::*;
+use sprung::Spring;
+
+use super::JuiceSystems;
+use crate::transform::TranslationSpring;
+
+/// What a [`SquashStretch`] keeps while it deforms.
+#[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
+#[reflect(Debug, Default, PartialEq, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Conserve {
+    /// The volume: stretching by `s` along the motion scales the two other axes by `1/√s`
+    /// (3D objects).
+    #[default]
+    Volume,
+    /// The area in the local x–y plane: stretching by `s` scales the other in-plane axis by
+    /// `1/s`, and z stays (sprites and UI).
+    Area,
+}
+
+/// Stretches its entity along its velocity and squashes it on impact, keeping its volume (or
+/// area), and returns to rest through its own spring: the classic cartoon deformation, as one
+/// component.
+///
+/// The velocity is the entity's [`TranslationSpring`]'s when it has one, otherwise how far its
+/// `GlobalTransform` moved over the last frame (anything that moves it: physics, a parent). The
+/// stretch it asks for is `1 + stretch_per_speed·speed`, at most `max_stretch`, along the
+/// velocity in the entity's local axes; the deformation springs toward that with `spring`, so
+/// when the entity stops short (a landing) the spring's momentum carries on into a squash
+/// before it settles. [`impact`](Self::impact) squashes it directly.
+///
+/// The deformation is stored as a vector `e` (direction of the stretch times its logarithm)
+/// and written as `Transform::scale = base_scale · s` with `ln sᵢ = |e|·(3dᵢ² − 1)/2`
+/// (`Volume`) or `|e|·(2dᵢ² − 1)` (`Area`, in x–y), `d = e/|e|`: the logarithms sum to zero,
+/// so the volume (area) is kept exactly, for any direction, with a scale that is always
+/// positive. The scale is written on the entity's local axes, so use it on an entity without a
+/// [`ScaleSpring`](crate::transform::ScaleSpring) (put one of them on a child). At rest it
+/// writes nothing.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn(mut commands: Commands) {
+///     commands.spawn((
+///         Transform::from_xyz(0.0, 300.0, 0.0),
+///         // Falls to the floor with a bounce...
+///         TranslationSpring::new(Spring::bouncy(), Vec3::ZERO),
+///         // ...stretching while it falls (pixels: 0.1% per px/s, at most 1.4×), 2D area kept.
+///         SquashStretch::new(0.001, 1.4).conserving(Conserve::Area),
+///     ));
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Clone)]
+#[reflect(Component, Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SquashStretch {
+    /// The stretch per unit of speed: `1 + stretch_per_speed·speed` along the motion.
+    pub stretch_per_speed: f32,
+    /// The largest stretch from speed (≥ 1); an [`impact`](Self::impact) may go beyond it.
+    pub max_stretch: f32,
+    /// The spring the deformation follows its target with: underdamped springs overshoot into
+    /// a squash when the motion stops. [`Spring::bouncy`] by default.
+    pub spring: Spring<f32>,
+    /// What the deformation keeps.
+    pub conserve: Conserve,
+    /// The scale when undeformed.
+    pub base_scale: Vec3,
+    #[reflect(ignore)]
+    #[cfg_attr(feature = "serde", serde(skip))]
+    motion: SquashMotion,
+}
+
+/// What a squash carries between frames.
+#[derive(Debug, Clone, Copy, Default)]
+struct SquashMotion {
+    /// The deformation vector `e` and its rate.
+    stretch: Vec3,
+    rate: Vec3,
+    /// Where the entity was last frame, for entities without a translation spring.
+    last_position: Option<Vec3>,
+    /// The deformation rests: nothing to step or write until the entity moves.
+    resting: bool,
+}
+
+/// Below these the deformation rests: a scale within 1e-5 of its base.
+const REST_STRETCH: f32 = 1e-5;
+const REST_RATE: f32 = 1e-4;
+
+impl SquashStretch {
+    /// Stretch by `stretch_per_speed` per unit of speed, at most by `max_stretch`, conserving
+    /// volume, with [`Spring::bouncy`] and a base scale of 1.
+    #[must_use]
+    pub fn new(stretch_per_speed: f32, max_stretch: f32) -> Self {
+        Self {
+            stretch_per_speed,
+            max_stretch,
+            spring: Spring::bouncy(),
+            conserve: Conserve::Volume,
+            base_scale: Vec3::ONE,
+            motion: SquashMotion::default(),
+        }
+    }
+
+    /// The same, conserving `conserve`.
+    #[must_use]
+    pub fn conserving(mut self, conserve: Conserve) -> Self {
+        self.conserve = conserve;
+        self
+    }
+
+    /// The same, with `spring` for the deformation.
+    #[must_use]
+    pub fn with_spring(mut self, spring: Spring<f32>) -> Self {
+        self.spring = spring;
+        self
+    }
+
+    /// The same, with `base_scale` as the undeformed scale.
+    #[must_use]
+    pub fn with_base_scale(mut self, base_scale: Vec3) -> Self {
+        self.base_scale = base_scale;
+        self
+    }
+
+    /// An impact along `axis` (local): kicks the deformation so that it peaks at a scale of
+    /// `factor` along `axis` (below 1 squashes: a landing is `impact(Vec3::Y, 0.7)`; above 1
+    /// stretches), then springs back. A zero or non-finite axis, or a factor that is not
+    /// positive and finite, is ignored.
+    pub fn impact(&mut self, axis: Vec3, factor: f32) {
+        let Some(direction) = axis.try_normalize() else {
+            return;
+        };
+        if !(factor > 0.0 && factor.is_finite()) {
+            return;
+        }
+        let Some(peak) = self.spring.impulse_peak().filter(|peak| *peak > 0.0) else {
+            return;
+        };
+        // The stretch along `d` is exp(|e|) for e = |e|·d, so ln(factor) along d is the swing.
+        let swing = direction * factor.ln();
+        self.motion.rate += swing / peak;
+        self.motion.resting = false;
+    }
+
+    /// The deformation's scale factors per local axis (multiply by `base_scale`): their product
+    /// is 1 (`Volume`), or that of x and y is (`Area`).
+    #[must_use]
+    pub fn factors(&self) -> Vec3 {
+        factors(self.motion.stretch, self.conserve)
+    }
+}
+
+/// `exp` of the per-axis logarithms that keep the volume (area): see [`SquashStretch`].
+fn factors(stretch: Vec3, conserve: Conserve) -> Vec3 {
+    let length = stretch.length();
+    if length <= f32::MIN_POSITIVE {
+        return Vec3::ONE;
+    }
+    let d2 = (stretch / length) * (stretch / length);
+    match conserve {
+        Conserve::Volume => (length * (3.0 * d2 - 1.0) * 0.5).exp(),
+        Conserve::Area => {
+            let f = (length * (2.0 * d2 - 1.0)).exp();
+            Vec3::new(f.x, f.y, 1.0)
+        }
+    }
+}
+
+/// After the springs: steps every deformation toward the stretch its velocity asks for and
+/// writes the scale.
+fn squash_and_stretch(
+    time: Res<Time>,
+    mut bodies: Query<(
+        &mut SquashStretch,
+        &mut Transform,
+        &GlobalTransform,
+        Option<&TranslationSpring>,
+    )>,
+) {
+    let dt = time.delta_secs();
+    if !(dt > 0.0 && dt.is_finite()) {
+        return;
+    }
+    for (mut squash, mut transform, global, spring) in &mut bodies {
+        let squash = squash.bypass_change_detection();
+        let position = global.translation();
+        let velocity = match (spring, squash.motion.last_position) {
+            (Some(spring), _) => spring.velocity(),
+            (None, Some(last)) => (position - last) / dt,
+            (None, None) => Vec3::ZERO,
+        };
+        squash.motion.last_position = Some(position);
+        let local = transform.rotation.inverse() * velocity;
+        let local = match squash.conserve {
+            Conserve::Volume => local,
+            Conserve::Area => local.with_z(0.0),
+        };
+        let speed = local.length();
+        let stretch = (1.0 + squash.stretch_per_speed * speed).min(squash.max_stretch);
+        let goal = if speed > 0.0 && stretch > 1.0 && stretch.is_finite() {
+            local / speed * stretch.ln()
+        } else {
+            Vec3::ZERO
+        };
+        let motion = &mut squash.motion;
+        if motion.resting && goal == Vec3::ZERO {
+            continue;
+        }
+        // Exact step of e toward its goal: a spring on the log-stretch vector.
+        let [[f0, f1], [g0, g1]] = squash.spring.transition(dt).matrix();
+        let offset = motion.stretch - goal;
+        let (stretch, rate) = (
+            goal + f0 * offset + f1 * motion.rate,
+            g0 * offset + g1 * motion.rate,
+        );
+        if !(stretch.is_finite() && rate.is_finite()) {
+            warn_once!("bevy_sprung: a SquashStretch deformation was not finite; reset");
+            *motion = SquashMotion::default();
+            continue;
+        }
+        motion.stretch = stretch;
+        motion.rate = rate;
+        motion.resting = goal == Vec3::ZERO
+            && stretch.length() < REST_STRETCH
+            && rate.length() < REST_RATE;
+        if motion.resting {
+            motion.stretch = Vec3::ZERO;
+            motion.rate = Vec3::ZERO;
+        }
+        let scale = squash.base_scale * factors(squash.motion.stretch, squash.conserve);
+        if transform.scale != scale {
+            transform.scale = scale;
+        }
+    }
+}
+
+pub(super) fn build(app: &mut App) {
+    app.register_type::<SquashStretch>()
+        .register_type::<Conserve>()
+        .add_systems(
+            PostUpdate,
+            squash_and_stretch
+                .in_set(JuiceSystems)
+                .before(super::shake::add_shakes)
+                .run_if(any_with_component::<SquashStretch>),
+        );
+}
