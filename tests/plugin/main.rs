@@ -15,6 +15,8 @@ mod catch_up;
 mod choreography;
 mod clocks;
 mod follow;
+mod interaction;
+mod juice;
 mod motion;
 mod properties;
 mod scheduling;

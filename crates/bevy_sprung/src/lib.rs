@@ -125,8 +125,8 @@ pub mod prelude {
     pub use crate::follow::{SpringFollow, TargetMotion};
     #[cfg(feature = "picking")]
     pub use crate::interaction::{
-        DragBounds, DragFollow, DragReleased, InteractionState, InteractionTargets, Snap,
-        SnapLine, SpringDrag,
+        DragBounds, DragFollow, DragReleased, InteractionState, InteractionTargets, Snap, SnapLine,
+        SpringDrag,
     };
     pub use crate::juice::{Conserve, Shake, SquashStretch};
     pub use crate::property::SpringProperty;

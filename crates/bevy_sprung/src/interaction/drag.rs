@@ -43,7 +43,8 @@ impl SnapLine {
     pub fn nearest(&self, point: Vec3) -> Vec3 {
         let length_squared = self.direction.length_squared();
         if length_squared > 0.0 && length_squared.is_finite() {
-            self.origin + self.direction * ((point - self.origin).dot(self.direction) / length_squared)
+            self.origin
+                + self.direction * ((point - self.origin).dot(self.direction) / length_squared)
         } else {
             self.origin
         }
@@ -352,7 +353,11 @@ impl SpringDrag {
         velocity: Vec3,
         home: Vec3,
     ) -> (Vec3, Vec3, Option<usize>) {
-        let throw = if self.throw.is_finite() { self.throw.max(0.0) } else { 0.0 };
+        let throw = if self.throw.is_finite() {
+            self.throw.max(0.0)
+        } else {
+            0.0
+        };
         let mut projected = position + velocity * throw;
         if let Some(bounds) = self.bounds {
             projected = bounds.clamp(projected);
@@ -398,7 +403,12 @@ impl DragContext<'_, '_> {
     }
 
     /// The pointer at `location` in `space` (for world space, in the space of `parent`).
-    fn pointer(&self, space: DragSpace, location: &Location, parent: Option<Entity>) -> Option<Vec3> {
+    fn pointer(
+        &self,
+        space: DragSpace,
+        location: &Location,
+        parent: Option<Entity>,
+    ) -> Option<Vec3> {
         match space {
             DragSpace::World {
                 camera,
@@ -412,10 +422,12 @@ impl DragContext<'_, '_> {
                 let plane = InfinitePlane3d::new(normal);
                 let distance = ray.intersect_plane(origin, plane)?;
                 let world = ray.get_point(distance);
-                Some(match parent.and_then(|parent| self.globals.get(parent).ok()) {
-                    Some(parent) => parent.affine().inverse().transform_point3(world),
-                    None => world,
-                })
+                Some(
+                    match parent.and_then(|parent| self.globals.get(parent).ok()) {
+                        Some(parent) => parent.affine().inverse().transform_point3(world),
+                        None => world,
+                    },
+                )
             }
             #[cfg(feature = "ui")]
             DragSpace::Ui => {
@@ -643,8 +655,7 @@ fn continue_drag(event: On<Pointer<Drag>>, context: DragContext, mut bodies: Que
     if active.pointer != event.pointer_id {
         return;
     }
-    let Some(position) =
-        dragged_position(&drag, active, &context, &event.pointer_location, parent)
+    let Some(position) = dragged_position(&drag, active, &context, &event.pointer_location, parent)
     else {
         return;
     };
@@ -678,8 +689,7 @@ fn end_drag(
         drag.state.path.record(now, position);
     }
     let velocity = drag.state.path.velocity(now);
-    let (projected, target, snapped) =
-        drag.release_target(moved.position(), velocity, active.home);
+    let (projected, target, snapped) = drag.release_target(moved.position(), velocity, active.home);
     moved.set_spring(drag.release_spring.unwrap_or(active.spring));
     moved.retarget(target, Some(velocity));
     drag.state.active = None;

@@ -152,32 +152,42 @@ fn touch(
 
 fn on_enter(event: On<Pointer<Enter>>, mut contacts: Query<&mut PointerContacts>) {
     let pointer = event.pointer_id;
-    touch(&mut contacts, event.entity, |c| insert(&mut c.hovering, pointer));
+    touch(&mut contacts, event.entity, |c| {
+        insert(&mut c.hovering, pointer)
+    });
 }
 
 fn on_leave(event: On<Pointer<Leave>>, mut contacts: Query<&mut PointerContacts>) {
     let pointer = event.pointer_id;
-    touch(&mut contacts, event.entity, |c| remove(&mut c.hovering, pointer));
+    touch(&mut contacts, event.entity, |c| {
+        remove(&mut c.hovering, pointer)
+    });
 }
 
 fn on_press(event: On<Pointer<Press>>, mut contacts: Query<&mut PointerContacts>) {
     if event.button == PointerButton::Primary {
         let pointer = event.pointer_id;
-        touch(&mut contacts, event.entity, |c| insert(&mut c.pressing, pointer));
+        touch(&mut contacts, event.entity, |c| {
+            insert(&mut c.pressing, pointer)
+        });
     }
 }
 
 fn on_release(event: On<Pointer<Release>>, mut contacts: Query<&mut PointerContacts>) {
     if event.button == PointerButton::Primary {
         let pointer = event.pointer_id;
-        touch(&mut contacts, event.entity, |c| remove(&mut c.pressing, pointer));
+        touch(&mut contacts, event.entity, |c| {
+            remove(&mut c.pressing, pointer)
+        });
     }
 }
 
 fn on_drag_start(event: On<Pointer<DragStart>>, mut contacts: Query<&mut PointerContacts>) {
     if event.button == PointerButton::Primary {
         let pointer = event.pointer_id;
-        touch(&mut contacts, event.entity, |c| insert(&mut c.dragging, pointer));
+        touch(&mut contacts, event.entity, |c| {
+            insert(&mut c.dragging, pointer)
+        });
     }
 }
 
@@ -220,7 +230,12 @@ struct NeverDisabled;
 /// states that change.
 fn update_states(
     focus: Option<Res<bevy::input_focus::InputFocus>>,
-    mut entities: Query<(Entity, &PointerContacts, &mut InteractionState, Has<Disabled>)>,
+    mut entities: Query<(
+        Entity,
+        &PointerContacts,
+        &mut InteractionState,
+        Has<Disabled>,
+    )>,
 ) {
     let focused = focus.and_then(|focus| focus.get());
     for (entity, contacts, mut state, disabled) in &mut entities {

@@ -131,7 +131,10 @@ mod tests {
         assert!((velocity.x - 800.0).abs() < 16.0, "{velocity}");
         assert!((velocity.y + 200.0).abs() < 4.0, "{velocity}");
         let delta = (last[1] - last[0]) * 60.0;
-        assert!((delta.x - 800.0).abs() > 50.0, "the one-frame delta {delta}");
+        assert!(
+            (delta.x - 800.0).abs() > 50.0,
+            "the one-frame delta {delta}"
+        );
     }
 
     /// A pointer that stopped for longer than the window before release does not fling; one

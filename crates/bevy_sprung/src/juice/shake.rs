@@ -176,14 +176,16 @@ impl Shake {
     /// Advances the noise and its filter by `dt` seconds and the trauma's decay.
     fn advance(&mut self, dt: f32) {
         if !self.trauma.is_finite() {
-            warn_once!("bevy_sprung: a Shake's trauma was not finite ({}); set to 0", self.trauma);
+            warn_once!(
+                "bevy_sprung: a Shake's trauma was not finite ({}); set to 0",
+                self.trauma
+            );
             self.trauma = 0.0;
         }
         self.trauma = self.trauma.clamp(0.0, 1.0);
         let frequency = f64::from(self.frequency);
         let filter = if frequency > 0.0 && frequency.is_finite() {
-            Spring::<f32>::from_natural_frequency(core::f32::consts::PI * self.frequency, 1.0)
-                .ok()
+            Spring::<f32>::from_natural_frequency(core::f32::consts::PI * self.frequency, 1.0).ok()
         } else {
             None
         };
@@ -254,7 +256,6 @@ fn noise(seed: u64, sample: u64, channel: u64) -> f32 {
     let unit = (z >> 40) as f32 / ((1u32 << 24) - 1) as f32;
     2.0 * unit - 1.0
 }
-
 
 /// `PreUpdate`: takes last frame's shake off. Where nothing else wrote the `Transform` since,
 /// the unshaken values come back bit for bit; otherwise the shake is subtracted from what was

@@ -32,10 +32,11 @@ pub enum Conserve {
 /// when the entity stops short (a landing) the spring's momentum carries on into a squash
 /// before it settles. [`impact`](Self::impact) squashes it directly.
 ///
-/// The deformation is stored as a vector `e` (direction of the stretch times its logarithm)
-/// and written as `Transform::scale = base_scale · s` with `ln sᵢ = |e|·(3dᵢ² − 1)/2`
-/// (`Volume`) or `|e|·(2dᵢ² − 1)` (`Area`, in x–y), `d = e/|e|`: the logarithms sum to zero,
-/// so the volume (area) is kept exactly, for any direction, with a scale that is always
+/// The deformation is the logarithm of the scale per local axis, `ℓ`, sprung toward
+/// `ℓᵢ = ln(stretch)·(3dᵢ² − 1)/2` (`Volume`) or `ln(stretch)·(2dᵢ² − 1)` (`Area`, in x–y) for
+/// the unit direction of motion `d`, and written as `Transform::scale = base_scale · exp(ℓ)`.
+/// Every target and kick has `Σℓᵢ = 0`, and a spring step is linear, so the volume (area) is
+/// kept to rounding for any direction, squash or stretch, with a scale that is always
 /// positive. The scale is written on the entity's local axes, so use it on an entity without a
 /// [`ScaleSpring`](crate::transform::ScaleSpring) (put one of them on a child). At rest it
 /// writes nothing.
@@ -81,7 +82,7 @@ pub struct SquashStretch {
 /// What a squash carries between frames.
 #[derive(Debug, Clone, Copy, Default)]
 struct SquashMotion {
-    /// The deformation vector `e` and its rate.
+    /// The logarithm of the scale per local axis, and its rate.
     stretch: Vec3,
     rate: Vec3,
     /// Where the entity was last frame, for entities without a translation spring.
@@ -144,8 +145,7 @@ impl SquashStretch {
         let Some(peak) = self.spring.impulse_peak().filter(|peak| *peak > 0.0) else {
             return;
         };
-        // The stretch along `d` is exp(|e|) for e = |e|·d, so ln(factor) along d is the swing.
-        let swing = direction * factor.ln();
+        let swing = logarithms(factor.ln(), direction, self.conserve);
         self.motion.rate += swing / peak;
         self.motion.resting = false;
     }
@@ -158,19 +158,24 @@ impl SquashStretch {
     }
 }
 
-/// `exp` of the per-axis logarithms that keep the volume (area): see [`SquashStretch`].
-fn factors(stretch: Vec3, conserve: Conserve) -> Vec3 {
-    let length = stretch.length();
-    if length <= f32::MIN_POSITIVE {
-        return Vec3::ONE;
-    }
-    let d2 = (stretch / length) * (stretch / length);
+/// The per-axis logarithms of a stretch by `e^log` along the unit `direction` (a squash for a
+/// negative `log`) that keep the volume (area): they sum to zero.
+fn logarithms(log: f32, direction: Vec3, conserve: Conserve) -> Vec3 {
+    let d2 = direction * direction;
     match conserve {
-        Conserve::Volume => (length * (3.0 * d2 - 1.0) * 0.5).exp(),
+        Conserve::Volume => log * (3.0 * d2 - 1.0) * 0.5,
         Conserve::Area => {
-            let f = (length * (2.0 * d2 - 1.0)).exp();
-            Vec3::new(f.x, f.y, 1.0)
+            let d2 = d2.truncate() / (d2.x + d2.y).max(f32::MIN_POSITIVE);
+            (log * (2.0 * d2 - 1.0)).extend(0.0)
         }
+    }
+}
+
+/// The scale factors of the per-axis logarithms `stretch`.
+fn factors(stretch: Vec3, conserve: Conserve) -> Vec3 {
+    match conserve {
+        Conserve::Volume => stretch.exp(),
+        Conserve::Area => stretch.truncate().exp().extend(1.0),
     }
 }
 
@@ -206,7 +211,7 @@ fn squash_and_stretch(
         let speed = local.length();
         let stretch = (1.0 + squash.stretch_per_speed * speed).min(squash.max_stretch);
         let goal = if speed > 0.0 && stretch > 1.0 && stretch.is_finite() {
-            local / speed * stretch.ln()
+            logarithms(stretch.ln(), local / speed, squash.conserve)
         } else {
             Vec3::ZERO
         };
@@ -214,7 +219,7 @@ fn squash_and_stretch(
         if motion.resting && goal == Vec3::ZERO {
             continue;
         }
-        // Exact step of e toward its goal: a spring on the log-stretch vector.
+        // The exact step of the logarithms toward their goal (linear: their sum stays 0).
         let [[f0, f1], [g0, g1]] = squash.spring.transition(dt).matrix();
         let offset = motion.stretch - goal;
         let (stretch, rate) = (
@@ -228,9 +233,8 @@ fn squash_and_stretch(
         }
         motion.stretch = stretch;
         motion.rate = rate;
-        motion.resting = goal == Vec3::ZERO
-            && stretch.length() < REST_STRETCH
-            && rate.length() < REST_RATE;
+        motion.resting =
+            goal == Vec3::ZERO && stretch.length() < REST_STRETCH && rate.length() < REST_RATE;
         if motion.resting {
             motion.stretch = Vec3::ZERO;
             motion.rate = Vec3::ZERO;

@@ -196,18 +196,23 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
                     .in_set(PropertySystems::<P>::default())
                     .run_if(any_with_component::<crate::interaction::InteractionTargets<P>>),
             );
-        // Presets from files reach every property's springs, before they are driven or step.
+        // Presets from files reach every property's springs, before pointer states, sequences
+        // or the step use them.
         #[cfg(feature = "asset")]
-        app.add_systems(
-            schedule,
-            crate::asset::apply_presets::<P, PropertySpring<P>>
-                .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>)
-                .in_set(PropertySystems::<P>::default())
-                .run_if(
+        {
+            let presets = crate::asset::apply_presets::<P, PropertySpring<P>>
+                .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>);
+            #[cfg(feature = "picking")]
+            let presets =
+                presets.before(crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>);
+            app.add_systems(
+                schedule,
+                presets.in_set(PropertySystems::<P>::default()).run_if(
                     resource_exists::<Assets<crate::asset::SpringPreset>>
                         .and_then(any_with_component::<crate::asset::UseSpringPreset>),
                 ),
-        );
+            );
+        }
     }
 
     fn is_unique(&self) -> bool {
