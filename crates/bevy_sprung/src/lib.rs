@@ -20,6 +20,9 @@
 //!   springs nobody sees skip frames and [catch up](visibility::CatchUpWhenHidden) exactly.
 //! - **Tween replacement and camera smoothing**: UI geometry and colours (feature `ui`),
 //!   [`SpringFollow`](follow::SpringFollow) for cameras, [`Spin`](spin::Spin) for whole turns.
+//! - **Interaction and juice**: springs that answer the pointer (`interaction`, feature
+//!   `picking`: hover/press/drag targets, drag and fling to snap points), and
+//!   [`juice`]: punches, camera shake, squash & stretch.
 //!
 //! # Example
 //! ```
@@ -42,7 +45,8 @@
 //! adds them all: [`clock`] ([`SpringClockPlugin`](clock::SpringClockPlugin)), [`spring`] (the
 //! mechanism: [`SpringSchedulePlugin`](spring::SpringSchedulePlugin),
 //! [`SpringPropertyPlugin`](spring::SpringPropertyPlugin)), [`transform`], [`spin`],
-//! [`follow`], `color`, `ui` and `visibility` (behind their features). Add the domain plugins
+//! [`follow`], [`juice`], `color`, `ui`, `interaction` and `visibility` (behind their
+//! features). Add the domain plugins
 //! alone to spring only what you need.
 //!
 //! # Features
@@ -52,6 +56,8 @@
 //! - `sprite`: `Sprite` colour (`color` + `bevy/bevy_sprite`).
 //! - `ui`: `UiTransform`, `Node` geometry, `BackgroundColor`, `BorderColor`, `TextColor` and
 //!   `ImageNode` colour (`color` + `bevy/bevy_ui`).
+//! - `picking`: `interaction`: `InteractionState`, `InteractionTargets`, `SpringDrag`
+//!   (`bevy/bevy_picking`; the app adds a picking backend).
 //! - `serde`: `Serialize`/`Deserialize` for [`Spring`](sprung::Spring), `RestThreshold`,
 //!   [`SpringClock`](clock::SpringClock) and the spring components' configuration.
 #![cfg_attr(docsrs, feature(doc_cfg))]
