@@ -93,7 +93,8 @@ fn shake_is_deterministic_and_frame_rate_independent() {
     // Times on every frame rate's grid.
     let samples: Vec<f64> = (1..=7).map(|k| f64::from(k) / 6.0).collect();
     let reference = shake_path(240, 7, &samples);
-    let gain = |t: f64| (1.0 - 0.8 * t as f32).max(0.0).powi(2);
+    #[expect(clippy::cast_possible_truncation, reason = "a gain in f32")]
+    let gain = |t: f64| (1.0 - 0.8 * t).max(0.0).powi(2) as f32;
     let mut largest = 0.0f32;
     for (&(offset, _), &t) in reference.iter().zip(&samples) {
         assert!(

@@ -99,6 +99,6 @@ impl Plugin for SpringPlugin {
         #[cfg(feature = "asset")]
         app.add_plugins(crate::asset::SpringAssetPlugin);
         #[cfg(feature = "picking")]
-        app.add_plugins(crate::interaction::InteractionPlugin);
+        app.add_plugins(crate::interaction::SpringInteractionPlugin);
     }
 }

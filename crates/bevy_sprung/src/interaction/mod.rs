@@ -413,9 +413,9 @@ pub(crate) fn retarget_on_interaction<P, C>(
 /// systems of [`InteractionTargets`] come with each property's
 /// [`SpringPropertyPlugin`](crate::spring::SpringPropertyPlugin).
 #[derive(Debug, Default, Clone, Copy)]
-pub struct InteractionPlugin;
+pub struct SpringInteractionPlugin;
 
-impl Plugin for InteractionPlugin {
+impl Plugin for SpringInteractionPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<InteractionState>()
             .register_type::<PointerContacts>()
