@@ -481,4 +481,10 @@ fn world_space_drag_through_a_camera() {
             "{translation} vs {expected}"
         );
     }
+    // Snapped to a point at another depth, it keeps its own (a 2D card keeps its draw order).
+    app.world_mut().get_mut::<SpringDrag>(card).unwrap().snap =
+        Snap::Points(vec![Vec3::new(100.0, 100.0, -40.0)]);
+    drag_end(&mut app, card, Vec2::new(455.0, 260.0));
+    let target = app.world().get::<TranslationSpring>(card).unwrap().target();
+    assert_eq!(target, Vec3::new(100.0, 100.0, 5.0));
 }

@@ -179,6 +179,12 @@ impl DragBounds {
 /// - or, with the `ui` feature, a [`UiTranslationSpring`](crate::ui::UiTranslationSpring)
 ///   (UI nodes; positions are `UiTransform::translation` in logical pixels, `z` unused).
 ///
+/// A world drag moves the entity in the plane through it facing the camera, and the release
+/// target keeps its depth along the camera's axis (a 2D card keeps its z, its draw order,
+/// whatever the snap point's; snap distances are still measured in 3D). To raise a card while
+/// it is dragged, change its z before the drag starts (on `Pointer<Press>`): the grab keeps it.
+/// A drag starts on the first move with the button down (`bevy_picking` has no dead zone).
+///
 /// The spring's own parameters are the release motion's (or [`release_spring`]'s); the state
 /// becomes [`InteractionState::Dragged`] while dragged, so [`InteractionTargets`] can lift
 /// and tint it.
@@ -689,7 +695,13 @@ fn end_drag(
         drag.state.path.record(now, position);
     }
     let velocity = drag.state.path.velocity(now);
-    let (projected, target, snapped) = drag.release_target(moved.position(), velocity, active.home);
+    let position = moved.position();
+    let (projected, mut target, snapped) = drag.release_target(position, velocity, active.home);
+    // A world drag moves in the plane facing the camera: the entity keeps its depth (in 2D,
+    // its z, the draw order) whatever the snap point's.
+    if let DragSpace::World { normal, .. } = active.space {
+        target -= normal * (target - position).dot(normal);
+    }
     moved.set_spring(drag.release_spring.unwrap_or(active.spring));
     moved.retarget(target, Some(velocity));
     drag.state.active = None;
