@@ -355,7 +355,9 @@ fn spawn_board(commands: &mut Commands, rounded: &Handle<Image>) {
             SpringDrag::new()
                 .snapping(Snap::Points(slots.clone()))
                 .within(SNAP_RADIUS)
-                .with_throw(THROW),
+                .with_throw(THROW)
+                // A press that wobbles a few pixels is still a click.
+                .with_threshold(4.0),
             ScaleSpring::new(Spring::bouncy(), Vec3::ONE),
             InteractionTargets::<Scale>::new(Vec3::ONE)
                 .hovered(Vec3::splat(1.08))

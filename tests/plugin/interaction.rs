@@ -488,3 +488,70 @@ fn world_space_drag_through_a_camera() {
     let target = app.world().get::<TranslationSpring>(card).unwrap().target();
     assert_eq!(target, Vec3::new(100.0, 100.0, 5.0));
 }
+
+/// With a threshold, a press with a few pixels of jitter stays a click: never dragged, nothing
+/// flung, the spring untouched. Past the threshold the drag takes the entity where it is (no
+/// jump) and follows the pointer from there.
+#[test]
+fn drag_threshold_keeps_clicks_clicks() {
+    let mut app = app(60);
+    let card = ui_card(
+        &mut app,
+        SpringDrag::new()
+            .snapping(Snap::Free)
+            .with_throw(0.0)
+            .with_threshold(6.0),
+    );
+    run(&mut app, 2);
+    let moved = |distance: Vec2| Drag {
+        button: PointerButton::Primary,
+        distance,
+        delta: Vec2::ZERO,
+    };
+    drag_start(&mut app, card, Vec2::new(50.0, 50.0), Entity::PLACEHOLDER);
+    pointer(
+        &mut app,
+        card,
+        Vec2::new(52.0, 51.0),
+        moved(Vec2::new(2.0, 1.0)),
+    );
+    run(&mut app, 1);
+    assert_ne!(state(&app, card), InteractionState::Dragged);
+    assert_eq!(ui_position(&app, card), Vec2::ZERO);
+    drag_end(&mut app, card, Vec2::new(52.0, 51.0));
+    run(&mut app, 1);
+    assert!(app.world().resource::<Released>().0.is_empty(), "a click");
+
+    drag_start(&mut app, card, Vec2::new(50.0, 50.0), Entity::PLACEHOLDER);
+    pointer(
+        &mut app,
+        card,
+        Vec2::new(54.0, 50.0),
+        moved(Vec2::new(4.0, 0.0)),
+    );
+    run(&mut app, 1);
+    assert_eq!(ui_position(&app, card), Vec2::ZERO);
+    pointer(
+        &mut app,
+        card,
+        Vec2::new(58.0, 50.0),
+        moved(Vec2::new(8.0, 0.0)),
+    );
+    run(&mut app, 1);
+    assert_eq!(state(&app, card), InteractionState::Dragged);
+    assert_eq!(
+        ui_position(&app, card),
+        Vec2::ZERO,
+        "taken where it is: no jump"
+    );
+    pointer(
+        &mut app,
+        card,
+        Vec2::new(78.0, 50.0),
+        moved(Vec2::new(28.0, 0.0)),
+    );
+    run(&mut app, 1);
+    assert_eq!(ui_position(&app, card), Vec2::new(20.0, 0.0));
+    drag_end(&mut app, card, Vec2::new(78.0, 50.0));
+    assert_eq!(app.world().resource::<Released>().0.len(), 1);
+}

@@ -233,6 +233,11 @@ pub struct SpringDrag {
     pub home: Option<Vec3>,
     /// The spring for the release motion. `None`: the spring's own parameters.
     pub release_spring: Option<Spring<f32>>,
+    /// How far (logical pixels) the pointer must travel with the button down before the drag
+    /// takes the entity: below it a press stays a click (no drag state, no fling, the spring
+    /// untouched). 0 by default (`bevy_picking`'s own rule: any motion drags); 4–8 px suits
+    /// shaky hands and touch. Once taken, the entity is held where it then is, so it never jumps.
+    pub threshold: f32,
     #[reflect(ignore)]
     #[cfg_attr(feature = "serde", serde(skip))]
     state: DragState,
@@ -255,6 +260,8 @@ struct ActiveDrag {
     home: Vec3,
     /// The spring's parameters before the drag, for the release.
     spring: Spring<f32>,
+    /// Whether the pointer has gone past the threshold (the drag holds the entity).
+    engaged: bool,
 }
 
 /// The space a drag moves its entity in.
@@ -291,6 +298,7 @@ impl SpringDrag {
             throw: 0.3,
             home: None,
             release_spring: None,
+            threshold: 0.0,
             state: DragState::default(),
         }
     }
@@ -344,10 +352,27 @@ impl SpringDrag {
         self
     }
 
-    /// Whether a pointer is dragging it.
+    /// The same, taking the entity only after the pointer travelled `pixels` (see
+    /// [`threshold`](Self::threshold)).
+    #[must_use]
+    pub fn with_threshold(mut self, pixels: f32) -> Self {
+        self.threshold = pixels;
+        self
+    }
+
+    /// Whether a pointer is dragging it (past the threshold).
     #[must_use]
     pub fn is_dragged(&self) -> bool {
-        self.state.active.is_some()
+        self.state.active.is_some_and(|active| active.engaged)
+    }
+
+    /// Whether a pointer that travelled `distance` (logical pixels) drags it.
+    pub(super) fn engages(&self, distance: Vec2) -> bool {
+        if self.threshold > 0.0 {
+            distance.length() >= self.threshold
+        } else {
+            true
+        }
     }
 
     /// Where the release target is for a release at `position` with `velocity`: the throw's
@@ -619,17 +644,34 @@ fn start_drag(event: On<Pointer<DragStart>>, context: DragContext, mut bodies: Q
     let home = drag.home.unwrap_or_else(|| moved.target());
     let spring = moved.spring();
     let drag = drag.as_mut();
-    drag.state.active = Some(ActiveDrag {
+    let mut active = ActiveDrag {
         pointer: event.pointer_id,
         space,
         grab: position - pointer,
         home,
         spring,
-    });
+        engaged: false,
+    };
     drag.state.path.clear();
-    drag.state.path.record(context.now(), position);
+    if drag.engages(Vec2::ZERO) {
+        engage(drag, &mut active, &mut moved, position, context.now());
+    }
+    drag.state.active = Some(active);
+}
+
+/// The drag takes the entity where it is: the pointer's path starts there, and the spring stops
+/// (exact follow: it settles and sleeps while the pointer moves the value) or becomes the
+/// follow spring.
+fn engage(
+    drag: &mut SpringDrag,
+    active: &mut ActiveDrag,
+    moved: &mut Moved,
+    position: Vec3,
+    now: f64,
+) {
+    active.engaged = true;
+    drag.state.path.record(now, position);
     match drag.follow {
-        // Stop where it is: the spring settles and sleeps, and the pointer moves the value.
         DragFollow::Exact => moved.retarget(position, Some(Vec3::ZERO)),
         DragFollow::Spring(follow) => moved.set_spring(follow),
     }
@@ -655,11 +697,30 @@ fn continue_drag(event: On<Pointer<Drag>>, context: DragContext, mut bodies: Que
         return;
     };
     let (mut drag, moved, parent, _) = body(item);
-    let (Some(mut moved), Some(active)) = (moved, drag.state.active) else {
+    let (Some(mut moved), Some(mut active)) = (moved, drag.state.active) else {
         return;
     };
     if active.pointer != event.pointer_id {
         return;
+    }
+    if !active.engaged {
+        if !drag.engages(event.distance) {
+            return;
+        }
+        // Taken where it is now: the grab is measured again, so nothing jumps.
+        let Some(pointer) = context.pointer(active.space, &event.pointer_location, parent) else {
+            return;
+        };
+        let position = moved.position();
+        active.grab = position - pointer;
+        engage(
+            drag.as_mut(),
+            &mut active,
+            &mut moved,
+            position,
+            context.now(),
+        );
+        drag.state.active = Some(active);
     }
     let Some(position) = dragged_position(&drag, active, &context, &event.pointer_location, parent)
     else {
@@ -686,6 +747,11 @@ fn end_drag(
         return;
     };
     if active.pointer != event.pointer_id {
+        return;
+    }
+    if !active.engaged {
+        // A click: nothing was taken, nothing is flung.
+        drag.state.active = None;
         return;
     }
     let now = context.now();

@@ -25,7 +25,9 @@ use core::fmt;
 use core::marker::PhantomData;
 
 use bevy::picking::PickingSystems;
-use bevy::picking::events::{Cancel, DragEnd, DragStart, Enter, Leave, Pointer, Press, Release};
+use bevy::picking::events::{
+    Cancel, Drag, DragEnd, DragStart, Enter, Leave, Pointer, Press, Release,
+};
 use bevy::picking::pointer::{PointerButton, PointerId};
 use bevy::prelude::*;
 
@@ -182,8 +184,32 @@ fn on_release(event: On<Pointer<Release>>, mut contacts: Query<&mut PointerConta
     }
 }
 
-fn on_drag_start(event: On<Pointer<DragStart>>, mut contacts: Query<&mut PointerContacts>) {
-    if event.button == PointerButton::Primary {
+fn on_drag_start(
+    event: On<Pointer<DragStart>>,
+    mut contacts: Query<&mut PointerContacts>,
+    drags: Query<&SpringDrag>,
+) {
+    // An entity with a drag threshold is dragged once the pointer passes it (`on_drag`).
+    let engaged = drags
+        .get(event.entity)
+        .is_ok_and(|drag| drag.engages(Vec2::ZERO));
+    if event.button == PointerButton::Primary && (engaged || drags.get(event.entity).is_err()) {
+        let pointer = event.pointer_id;
+        touch(&mut contacts, event.entity, |c| {
+            insert(&mut c.dragging, pointer)
+        });
+    }
+}
+
+fn on_drag(
+    event: On<Pointer<Drag>>,
+    mut contacts: Query<&mut PointerContacts>,
+    drags: Query<&SpringDrag>,
+) {
+    if event.button == PointerButton::Primary
+        && let Ok(drag) = drags.get(event.entity)
+        && drag.engages(event.distance)
+    {
         let pointer = event.pointer_id;
         touch(&mut contacts, event.entity, |c| {
             insert(&mut c.dragging, pointer)
@@ -424,6 +450,7 @@ impl Plugin for SpringInteractionPlugin {
             .add_observer(on_press)
             .add_observer(on_release)
             .add_observer(on_drag_start)
+            .add_observer(on_drag)
             .add_observer(on_drag_end)
             .add_observer(on_cancel)
             .configure_sets(PreUpdate, InteractionSystems.after(PickingSystems::Last))
