@@ -35,6 +35,48 @@ fn configurations_round_trip() {
     assert_eq!(round_trip(&turn).target(), turn.target());
 }
 
+/// Interaction and juice components round-trip their configuration.
+#[test]
+fn interaction_and_juice_round_trip() {
+    use bevy_sprung::interaction::{DragBounds, DragFollow, InteractionTargets, Snap, SpringDrag};
+    let targets = InteractionTargets::<Scale>::new(Vec3::ONE)
+        .hovered(Vec3::splat(1.1))
+        .pressed(Vec3::splat(0.9));
+    let back = round_trip(&targets);
+    assert_eq!(
+        (back.idle, back.hovered, back.pressed),
+        (targets.idle, targets.hovered, targets.pressed)
+    );
+    assert_eq!(back.dragged, None);
+
+    let drag = SpringDrag::new()
+        .following(DragFollow::Spring(Spring::stiff()))
+        .snapping(Snap::Points(vec![Vec3::X, Vec3::Y]))
+        .within(50.0)
+        .bounded(DragBounds {
+            min: Vec3::ZERO,
+            max: Vec3::splat(10.0),
+            give: 3.0,
+        })
+        .with_threshold(4.0);
+    let back = round_trip(&drag);
+    assert_eq!(back.follow, drag.follow);
+    assert_eq!(back.snap, drag.snap);
+    assert_eq!(back.bounds, drag.bounds);
+    assert_eq!((back.snap_radius, back.threshold), (Some(50.0), 4.0));
+
+    let mut shake = Shake::new(9).with_max_translation(Vec3::new(4.0, 4.0, 0.0));
+    shake.add_trauma(0.5);
+    let back = round_trip(&shake);
+    assert_eq!(
+        (back.seed, back.trauma, back.max_translation),
+        (9, 0.5, shake.max_translation)
+    );
+    let squash = SquashStretch::new(0.01, 1.3).conserving(Conserve::Area);
+    let back = round_trip(&squash);
+    assert_eq!((back.max_stretch, back.conserve), (1.3, Conserve::Area));
+}
+
 /// A file need only name the spring (any parametrisation) and the target.
 #[test]
 fn a_spring_read_from_a_file_springs() {

@@ -311,6 +311,14 @@ fn update_states(
 #[derive(Component, Reflect)]
 #[reflect(Component, Debug, Clone)]
 #[require(InteractionState)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(bound(
+        serialize = "ValueOf<P>: serde::Serialize",
+        deserialize = "ValueOf<P>: serde::Deserialize<'de>"
+    ))
+)]
 pub struct InteractionTargets<P: SpringProperty> {
     /// The target with no pointer on the entity.
     pub idle: ValueOf<P>,
@@ -325,6 +333,7 @@ pub struct InteractionTargets<P: SpringProperty> {
     /// The target while disabled.
     pub disabled: Option<ValueOf<P>>,
     #[reflect(ignore)]
+    #[cfg_attr(feature = "serde", serde(skip))]
     property: PhantomData<fn() -> P>,
 }
 
