@@ -31,6 +31,9 @@ const MAX_SAMPLES_PER_FRAME: u64 = 64;
 ///   own right and up).
 /// - **Free when calm**: at zero trauma nothing is stepped or written.
 ///
+/// On a camera, picking in `PreUpdate` still sees last frame's shaken `GlobalTransform` (what
+/// the player saw): a pointer held still over a shaking view moves in the world by the shake.
+///
 /// A non-finite `trauma` (through reflection) is taken as 0, with one warning.
 ///
 /// # Example
