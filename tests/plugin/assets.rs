@@ -6,7 +6,7 @@ use bevy::prelude::*;
 use bevy_sprung::asset::{SequencePreset, SpringPreset, UseSequencePreset, UseSpringPreset};
 use bevy_sprung::prelude::*;
 
-use crate::harness::{run, translation, translation_spring};
+use crate::harness::{run, targets_visited, translation, translation_spring};
 
 /// A headless app that loads assets from `folder` (relative to the workspace root). The
 /// spring plugin comes first: its assets are registered once every plugin is built.
@@ -91,14 +91,7 @@ fn a_sequence_file_drives_a_property() {
         ))
         .id();
     assert!(matches!(wait_for(&mut app, &handle), LoadState::Loaded));
-    let mut visited = Vec::new();
-    for _ in 0..600 {
-        app.update();
-        let target = translation_spring(&app, entity).target();
-        if visited.last() != Some(&target) {
-            visited.push(target);
-        }
-    }
+    let visited = targets_visited(&mut app, entity, 600);
     let up = Vec3::new(0.0, 10.0, 0.0);
     // Two passes, forth and back (the turning point is not repeated); `visited` starts once the
     // file has loaded and the sequence began.

@@ -7,7 +7,7 @@ use bevy::prelude::*;
 use bevy_sprung::choreography::SequencePhase;
 use bevy_sprung::prelude::*;
 
-use crate::harness::{app, elapsed, run, translation, translation_spring};
+use crate::harness::{app, elapsed, run, targets_visited, translation, translation_spring};
 
 /// What happened, in order: `(seconds, what)`.
 #[derive(Resource, Clone, Default)]
@@ -93,14 +93,7 @@ fn a_sequence_visits_its_targets_in_order_each_when_the_last_settled() {
                 .then(targets[2]),
         ))
         .id();
-    let mut visited = Vec::new();
-    for _ in 0..600 {
-        app.update();
-        let target = translation_spring(&app, entity).target();
-        if visited.last() != Some(&target) {
-            visited.push(target);
-        }
-    }
+    let visited = targets_visited(&mut app, entity, 600);
     // The three steps, in order (the first is set on the first update).
     assert_eq!(visited, targets);
     assert_eq!(translation(&app, entity), Vec3::ZERO);

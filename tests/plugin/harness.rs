@@ -53,6 +53,20 @@ pub(crate) fn translation_spring(app: &App, entity: Entity) -> TranslationSpring
     *app.world().get::<TranslationSpring>(entity).unwrap()
 }
 
+/// Runs `frames` updates and returns the targets the entity's translation spring had, each
+/// once, in the order they came.
+pub(crate) fn targets_visited(app: &mut App, entity: Entity, frames: u32) -> Vec<Vec3> {
+    let mut visited = Vec::new();
+    for _ in 0..frames {
+        app.update();
+        let target = translation_spring(app, entity).target();
+        if visited.last() != Some(&target) {
+            visited.push(target);
+        }
+    }
+    visited
+}
+
 /// Whether the entity's spring on `P` sleeps.
 pub(crate) fn asleep<P: SpringProperty>(app: &App, entity: Entity) -> bool {
     app.world().get::<SpringAsleep<P>>(entity).is_some()

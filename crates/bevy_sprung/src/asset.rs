@@ -234,6 +234,16 @@ impl fmt::Display for SpringAssetError {
 
 impl core::error::Error for SpringAssetError {}
 
+/// The whole file a loader reads.
+async fn read_all(reader: &mut dyn Reader) -> Result<Vec<u8>, SpringAssetError> {
+    let mut bytes = Vec::new();
+    reader
+        .read_to_end(&mut bytes)
+        .await
+        .map_err(SpringAssetError::Io)?;
+    Ok(bytes)
+}
+
 /// Loads `*.spring.ron` files as [`SpringPreset`]s.
 #[derive(Debug, Default, TypePath)]
 pub struct SpringPresetLoader;
@@ -249,12 +259,7 @@ impl AssetLoader for SpringPresetLoader {
         _settings: &(),
         _context: &mut LoadContext<'_>,
     ) -> Result<SpringPreset, SpringAssetError> {
-        let mut bytes = Vec::new();
-        reader
-            .read_to_end(&mut bytes)
-            .await
-            .map_err(SpringAssetError::Io)?;
-        SpringPreset::from_ron(&bytes)
+        SpringPreset::from_ron(&read_all(reader).await?)
     }
 
     fn extensions(&self) -> &[&str] {
@@ -277,12 +282,7 @@ impl AssetLoader for SequencePresetLoader {
         _settings: &(),
         _context: &mut LoadContext<'_>,
     ) -> Result<SequencePreset, SpringAssetError> {
-        let mut bytes = Vec::new();
-        reader
-            .read_to_end(&mut bytes)
-            .await
-            .map_err(SpringAssetError::Io)?;
-        SequencePreset::from_ron(&bytes)
+        SequencePreset::from_ron(&read_all(reader).await?)
     }
 
     fn extensions(&self) -> &[&str] {

@@ -192,8 +192,8 @@ fn on_drag_start(
     // An entity with a drag threshold is dragged once the pointer passes it (`on_drag`).
     let engaged = drags
         .get(event.entity)
-        .is_ok_and(|drag| drag.engages(Vec2::ZERO));
-    if event.button == PointerButton::Primary && (engaged || drags.get(event.entity).is_err()) {
+        .map_or(true, |drag| drag.engages(Vec2::ZERO));
+    if event.button == PointerButton::Primary && engaged {
         let pointer = event.pointer_id;
         touch(&mut contacts, event.entity, |c| {
             insert(&mut c.dragging, pointer)
