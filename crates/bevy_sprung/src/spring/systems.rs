@@ -18,8 +18,12 @@ type Seen = Without<crate::visibility::CatchUpWhenHidden>;
 #[cfg(not(feature = "visibility"))]
 type Seen = ();
 
-/// Steps every awake spring on property `P`, in parallel, and puts the ones that settle to
-/// sleep (triggering [`SpringSettled<P>`]).
+/// Steps every awake spring on property `P`, in parallel on the compute pool's threads, and
+/// puts the ones that settle to sleep (triggering [`SpringSettled<P>`]).
+///
+/// Bevy gives the compute pool the cores left after its I/O and async pools: on a machine with
+/// two cores that is one thread, and the springs step on it alone. See
+/// [`SpringPlugin`](crate::SpringPlugin) for the task-pool setting that gives them both.
 pub(crate) fn step_springs<P: SpringProperty>(
     time: SpringTime,
     reduced_motion: Option<Res<ReducedMotion>>,
@@ -44,10 +48,13 @@ pub(crate) fn step_springs<P: SpringProperty>(
     commands: ParallelCommands,
 ) {
     let steps = time.steps();
-    let mut cache = TransitionCache::default();
     let table = &mut *table;
-    let mut count = 0;
+    table.prepare(steps);
+    let count = springs.iter().len();
+    #[cfg(feature = "visibility")]
+    let count = count + catching_up.iter().len();
     let preference = reduced_motion.map_or(ReducedMotion::Full, |preference| *preference);
+    let mut cache = TransitionCache::default();
     if preference.is_reduced() {
         for (entity, spring, mut component) in &mut springs {
             let spring = spring.into_inner();
@@ -63,27 +70,30 @@ pub(crate) fn step_springs<P: SpringProperty>(
             if frame.outcome == Stepped::Settled {
                 put_to_sleep::<P>(&commands, entity);
             }
-            count += 1;
         }
-        table.collect(count);
+        table.finish(count);
         return;
     }
-    for (entity, spring, mut component) in &mut springs {
-        // Changed since this system last ran: by something else than this system, which marks
-        // every spring it steps (a retarget, a kick, an edit through reflection).
-        let untouched = !spring.is_changed();
-        // The spring changes every frame it is stepped; the property only when it moves.
-        let spring = spring.into_inner();
-        let current = P::get(&component);
-        let frame = spring.step(current, steps, false, untouched, (table, &mut cache));
-        if let Some(value) = frame.write {
-            P::set(&mut component, value);
-        }
-        if frame.outcome == Stepped::Settled {
-            put_to_sleep::<P>(&commands, entity);
-        }
-        count += 1;
-    }
+    let shared: &TransitionTable = table;
+    springs.par_iter_mut().for_each_init(
+        // Boxed: the fold moves its accumulator from entity to entity.
+        Box::<TransitionCache>::default,
+        |cache, (entity, spring, mut component)| {
+            // Changed since this system last ran: by something else than this system, which
+            // marks every spring it steps (a retarget, a kick, an edit through reflection).
+            let untouched = !spring.is_changed();
+            // The spring changes every frame it is stepped; the property only when it moves.
+            let spring = spring.into_inner();
+            let current = P::get(&component);
+            let frame = spring.step(current, steps, false, untouched, (shared, cache));
+            if let Some(value) = frame.write {
+                P::set(&mut component, value);
+            }
+            if frame.outcome == Stepped::Settled {
+                put_to_sleep::<P>(&commands, entity);
+            }
+        },
+    );
     // Springs that may skip frames while nobody sees them (`ViewVisibility` lags a frame).
     #[cfg(feature = "visibility")]
     for (entity, mut spring, mut component, visibility) in &mut catching_up {
@@ -92,9 +102,8 @@ pub(crate) fn step_springs<P: SpringProperty>(
         if stepped == Stepped::Settled {
             put_to_sleep::<P>(&commands, entity);
         }
-        count += 1;
     }
-    table.collect(count);
+    table.finish(count);
 }
 
 /// Marks a spring that settled as asleep and triggers [`SpringSettled<P>`]; out of line, so

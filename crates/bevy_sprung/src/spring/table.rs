@@ -1,7 +1,11 @@
 //! Every distinct spring's transition, kept across frames: what the per-entity step reads.
 
 use bevy::platform::collections::HashMap;
+use bevy::tasks::{ComputeTaskPool, ParallelSliceMut};
+use bevy::utils::Parallel;
 use sprung::{Spring, Transition};
+
+use crate::clock::FrameSteps;
 
 /// What makes a slot: the bits of the spring's parameters, and the clock index
 /// ([`FrameSteps`](crate::clock::FrameSteps)).
@@ -99,6 +103,8 @@ impl Anchor {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Slot {
     key: Key,
+    /// The spring the key stands for (validated when the slot was made).
+    spring: Spring<f32>,
     /// The time step `increments` is for (NaN: none yet).
     dt: f32,
     /// `D = M − I` over `dt`, row-major.
@@ -107,26 +113,26 @@ pub(crate) struct Slot {
 }
 
 impl Slot {
-    /// The increments over `dt`, refreshed if `dt` changed: extended from the anchor when it is
-    /// close, otherwise computed exactly (and anchored there).
+    /// Makes the increments those over `dt`, if they are for another time step: extended from
+    /// the anchor when it is close, otherwise computed exactly (and anchored there).
     #[inline]
-    pub(crate) fn increments(&mut self, spring: &Spring<f32>, dt: f32) -> [f32; 4] {
+    fn prepare(&mut self, dt: f32) {
         #[expect(
             clippy::float_cmp,
             reason = "the increments are for exactly this time step, bit for bit"
         )]
         if self.dt != dt {
-            self.refresh(spring, dt);
+            self.refresh(dt);
         }
-        self.increments
     }
 
     #[cold]
     #[inline(never)]
-    fn refresh(&mut self, spring: &Spring<f32>, dt: f32) {
+    fn refresh(&mut self, dt: f32) {
         if let Some(increments) = self.anchor.and_then(|anchor| anchor.increments(dt)) {
             self.increments = increments;
         } else {
+            let spring = self.spring;
             let transition = spring.transition(dt);
             let [[d00, d01], [d10, d11]] = transition.increment_matrix();
             self.increments = [d00, d01, d10, d11];
@@ -147,6 +153,12 @@ impl Slot {
 /// while nothing touches it, finding its transition is one indexed load, however many springs
 /// the scene has: one shared spring, a handful, or one per entity.
 ///
+/// A frame goes: [`prepare`](Self::prepare) makes every slot's increments those of this
+/// frame's time steps (in parallel when the compute pool has threads to spare); the springs
+/// step, reading the table only (so that they can step in parallel), and a spring whose
+/// parameters have no slot yet [`request`](Self::request)s one and steps the general way;
+/// [`finish`](Self::finish) adds the requested slots and collects the table.
+///
 /// Slots are added when a spring first needs one and never move; when the table has far more
 /// slots than springs (springs despawned or changed), it is cleared and its generation advances,
 /// so every spring finds (or makes) its slot again.
@@ -155,7 +167,12 @@ pub(crate) struct TransitionTable {
     slots: Vec<Slot>,
     index: HashMap<Key, u32>,
     generation: u32,
+    /// Slots springs asked for this frame, per thread.
+    requests: Parallel<Vec<(Key, Spring<f32>)>>,
 }
+
+/// Slots per parallel task when preparing: enough work to outweigh handing it out.
+const PREPARE_CHUNK: usize = 4096;
 
 impl TransitionTable {
     /// A generation no table is ever in: what a spring without a slot remembers (generations
@@ -168,35 +185,76 @@ impl TransitionTable {
         self.generation
     }
 
-    /// The slot at `index`, from a spring that remembered it in this generation.
-    #[inline]
-    pub(crate) fn slot(&mut self, index: u32) -> Option<&mut Slot> {
-        self.slots.get_mut(index as usize)
-    }
-
-    /// The index of the slot of `spring` on clock `clock`, added if new, or `None` for
-    /// parameters that are not a valid spring (possible through reflection).
-    pub(crate) fn find(&mut self, spring: &Spring<f32>, clock: u8) -> Option<u32> {
-        let key = Key::new(spring, clock);
-        if let Some(&index) = self.index.get(&key) {
-            return Some(index);
+    /// Makes every slot's increments those over its clock's time step in `steps`. A frame with
+    /// the same time steps as the last costs one comparison per slot; with new ones (Bevy's
+    /// virtual time varies from frame to frame), each slot is extended or recomputed, split
+    /// over the compute pool's threads when it has more than one.
+    pub(crate) fn prepare(&mut self, steps: FrameSteps) {
+        let prepare = |slots: &mut [Slot]| {
+            for slot in slots {
+                slot.prepare(steps.of(slot.key.clock));
+            }
+        };
+        let threads = ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num());
+        if threads > 1 && self.slots.len() > PREPARE_CHUNK {
+            let _done: Vec<()> =
+                self.slots
+                    .par_chunk_map_mut(ComputeTaskPool::get(), PREPARE_CHUNK, |_, slots| {
+                        prepare(slots);
+                    });
+        } else {
+            prepare(&mut self.slots);
         }
-        Spring::new(spring.mass(), spring.stiffness(), spring.damping()).ok()?;
-        let index = u32::try_from(self.slots.len()).ok()?;
-        self.slots.push(Slot {
-            key,
-            dt: f32::NAN,
-            increments: [0.0; 4],
-            anchor: None,
-        });
-        self.index.insert(key, index);
-        Some(index)
     }
 
-    /// After a frame that stepped `springs` springs: clears the table when it holds more than
-    /// twice as many slots as there are springs (and a few more), so that springs despawned or
-    /// changed do not keep slots for ever.
-    pub(crate) fn collect(&mut self, springs: usize) {
+    /// The increments of slot `index` (prepared for this frame), from a spring that remembered
+    /// it in this generation.
+    #[inline]
+    pub(crate) fn increments(&self, index: u32) -> Option<[f32; 4]> {
+        self.slots.get(index as usize).map(|slot| slot.increments)
+    }
+
+    /// The index of the slot of `spring` on clock `clock`, if the table has one.
+    #[inline]
+    pub(crate) fn lookup(&self, spring: &Spring<f32>, clock: u8) -> Option<u32> {
+        self.index.get(&Key::new(spring, clock)).copied()
+    }
+
+    /// Asks for a slot for `spring` on clock `clock`, added when the frame
+    /// [`finish`](Self::finish)es: from the next frame on, the spring finds it.
+    #[cold]
+    pub(crate) fn request(&self, spring: &Spring<f32>, clock: u8) {
+        self.requests
+            .borrow_local_mut()
+            .push((Key::new(spring, clock), *spring));
+    }
+
+    /// After a frame that stepped `springs` springs: adds the slots requested (for parameters
+    /// that are a valid spring; reflection can write others), then clears the table when it
+    /// holds more than twice as many slots as there are springs (and a few more), so that
+    /// springs despawned or changed do not keep slots for ever.
+    pub(crate) fn finish(&mut self, springs: usize) {
+        let mut requests = core::mem::take(&mut self.requests);
+        for (key, spring) in requests.iter_mut().flat_map(|requests| requests.drain(..)) {
+            if self.index.contains_key(&key)
+                || Spring::new(spring.mass(), spring.stiffness(), spring.damping()).is_err()
+            {
+                continue;
+            }
+            let Ok(index) = u32::try_from(self.slots.len()) else {
+                break;
+            };
+            self.slots.push(Slot {
+                key,
+                spring,
+                dt: f32::NAN,
+                increments: [0.0; 4],
+                anchor: None,
+            });
+            self.index.insert(key, index);
+        }
+        // The per-thread buffers keep their capacity for the next frame.
+        self.requests = requests;
         if self.slots.len() > 2 * springs + 64 {
             self.slots.clear();
             self.index.clear();
@@ -207,12 +265,10 @@ impl TransitionTable {
     /// The parameters of slot `index` in `generation`, if that is this table's: the last valid
     /// parameters of the spring that remembers it.
     pub(crate) fn parameters(&self, index: u32, generation: u32) -> Option<Spring<f32>> {
-        let slot = self
-            .slots
+        self.slots
             .get(index as usize)
-            .filter(|_| generation == self.generation)?;
-        let [mass, stiffness, damping] = slot.key.parameters.map(f32::from_bits);
-        Spring::new(mass, stiffness, damping).ok()
+            .filter(|_| generation == self.generation)
+            .map(|slot| slot.spring)
     }
 
     /// Whether `spring` is what slot `index` was made for (after it was touched).

@@ -54,6 +54,21 @@ fn rest_for(spring: &Spring, magnitude: f32) -> RestThreshold {
     RestThreshold::for_spring(spring, 1e-3_f32.max(4.0 * magnitude.spacing()))
 }
 
+/// One frame of the stepping system's protocol for one spring: the table prepared for the
+/// frame's time steps, the step, and the slots it asked for added.
+fn step_frame<P: crate::property::SpringProperty, C: core::ops::DerefMut<Target = P::Component>>(
+    spring: &mut PropertySpring<P>,
+    component: &mut C,
+    steps: FrameSteps,
+    hidden: bool,
+    (table, cache): (&mut TransitionTable, &mut TransitionCache),
+) -> Stepped {
+    table.prepare(steps);
+    let stepped = spring.step_on(component, steps, hidden, (&*table, cache));
+    table.finish(1);
+    stepped
+}
+
 /// Steps `spring` on `component` at `fps` until it settles or `limit` seconds pass; the settle
 /// time in seconds.
 fn settle<P: crate::property::SpringProperty>(
@@ -73,7 +88,13 @@ fn settle<P: crate::property::SpringProperty>(
     let frames = (limit / dt).ceil() as u64;
     (1..=frames).find_map(|frame| {
         let steps = FrameSteps::all(narrow(dt));
-        let stepped = spring.step_on(&mut &mut *component, steps, false, (&mut table, &mut cache));
+        let stepped = step_frame(
+            spring,
+            &mut &mut *component,
+            steps,
+            false,
+            (&mut table, &mut cache),
+        );
         #[expect(clippy::cast_precision_loss, reason = "frame counts are small")]
         (stepped == Stepped::Settled).then_some(frame as f64 * dt)
     })
@@ -213,7 +234,8 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
                 x if x < 0.02 => narrow(0.5 * random.unit()),
                 _ => narrow(1.0 / (30.0 + 330.0 * random.unit())),
             };
-            let stepped = spring.step_on(
+            let stepped = step_frame(
+                &mut spring,
                 &mut &mut transform,
                 FrameSteps::all(dt),
                 false,
@@ -268,7 +290,8 @@ fn settle_after_the_last_retarget(
     let step = exact.transition(f64::from(dt));
     let mut shadow_at_rest = None;
     for frame in 1_u32.. {
-        let settled = spring.step_on(
+        let settled = step_frame(
+            spring,
             &mut &mut *transform,
             FrameSteps::all(dt),
             false,

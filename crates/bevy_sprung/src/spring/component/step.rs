@@ -85,7 +85,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         component: &mut C,
         steps: FrameSteps,
         hidden: bool,
-        (table, cache): (&mut TransitionTable, &mut TransitionCache),
+        (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Stepped {
         let frame = self.step(P::get(&**component), steps, hidden, false, (table, cache));
         if let Some(value) = frame.write {
@@ -116,7 +116,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         steps: FrameSteps,
         hidden: bool,
         untouched: bool,
-        (table, cache): (&mut TransitionTable, &mut TransitionCache),
+        (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
         let clock = FrameSteps::index(self.clock);
         let dt = steps.of(clock);
@@ -125,8 +125,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         } else {
             self.usual_slot(dt, clock, hidden, table)
         };
-        if let Some(slot) = slot.and_then(|slot| table.slot(slot)) {
-            let [d00, d01, d10, d11] = slot.increments(&self.spring, dt);
+        if let Some([d00, d01, d10, d11]) = slot.and_then(|slot| table.increments(slot)) {
             let target = self.target;
             let carried = self.motion.offset;
             let before = if P::Space::is_written(current, target, carried) {
@@ -168,7 +167,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         current: ValueOf<P>,
         steps: FrameSteps,
         preference: ReducedMotion,
-        (table, cache): (&mut TransitionTable, &mut TransitionCache),
+        (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
         let dt = steps.of(FrameSteps::index(self.clock));
         self.motion.generation = TransitionTable::NO_GENERATION;
@@ -206,7 +205,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         dt: f32,
         clock: u8,
         hidden: bool,
-        table: &mut TransitionTable,
+        table: &TransitionTable,
     ) -> Option<u32> {
         let usual = !hidden
             & (dt > 0.0)
@@ -222,8 +221,12 @@ impl<P: SpringProperty> PropertySpring<P> {
         let slot = if self.motion.generation == generation && table.holds(slot, &self.spring, clock)
         {
             slot
+        } else if let Some(slot) = table.lookup(&self.spring, clock) {
+            slot
         } else {
-            table.find(&self.spring, clock)?
+            // New parameters: stepped the general way this frame, from its slot the next.
+            table.request(&self.spring, clock);
+            return None;
         };
         self.motion.slot = slot;
         self.motion.generation = generation;
