@@ -112,7 +112,7 @@ fn rest(c: &mut Criterion) {
         // With `TransformPlugin` in both, as in any app with something to spring: `PostUpdate`
         // then exists without the plugin too, and the difference is the plugin's own cost.
         let mut app = App::new();
-        app.add_plugins((MinimalPlugins, TransformPlugin));
+        app.add_plugins((scenarios::minimal_plugins(), TransformPlugin));
         if plugin {
             app.add_plugins(bevy_sprung::SpringPlugin::default());
         }

@@ -39,6 +39,37 @@ use crate::transform::TransformSpringPlugin;
 /// let ui = SpringPlugin::default().with_clock(SpringClock::Real);
 /// # let _ = (fixed, ui);
 /// ```
+///
+/// # Using every core
+/// Springs step in parallel on Bevy's compute task pool. Bevy gives that pool the cores left
+/// after one thread each for I/O and async tasks, so on a machine with two cores it has one
+/// thread and springs step on one core. Ask for a compute thread per core (the I/O and async
+/// threads mostly sleep) to step them on all of them:
+/// ```
+/// use bevy::app::{TaskPoolOptions, TaskPoolPlugin, TaskPoolThreadAssignmentPolicy};
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// let cores = std::thread::available_parallelism().map_or(1, |cores| cores.get());
+/// let task_pools = TaskPoolPlugin {
+///     task_pool_options: TaskPoolOptions {
+///         compute: TaskPoolThreadAssignmentPolicy {
+///             min_threads: cores,
+///             ..TaskPoolOptions::default().compute
+///         },
+///         ..default()
+///     },
+/// };
+/// App::new()
+///     // `DefaultPlugins.set(task_pools)` in a game.
+///     .add_plugins((MinimalPlugins.set(task_pools), SpringPlugin::default()))
+///     .update();
+/// ```
+/// On this crate's two-core benchmark machine, 100 000 moving springs stepped 1.7–1.8× faster
+/// with two compute threads than with Bevy's default one, and a whole frame of a million springs
+/// 1.7× faster. Each spring steps independently (the same result on any number of threads), so
+/// the split should keep scaling with cores until memory bandwidth, not arithmetic, bounds the
+/// step: the spring and its `Transform` are about 190 bytes per entity per frame.
 #[derive(Debug, Clone)]
 pub struct SpringPlugin {
     /// The schedule the springs step in: `PostUpdate` by default, `FixedUpdate` for

@@ -90,6 +90,26 @@ pub(crate) fn spring_damper_halflife(half_life: f32) -> f32 {
     2.0 * core::f32::consts::LN_2 / omega - 1e-5
 }
 
+/// `MinimalPlugins`, with as many compute threads as `SPRUNG_BENCH_COMPUTE_THREADS` says (the
+/// task-pool setting `SpringPlugin`'s docs give), or Bevy's default pools. The pools are made
+/// once per process: a run measures one setting.
+#[must_use]
+pub(crate) fn minimal_plugins() -> bevy::app::PluginGroupBuilder {
+    use bevy::app::{TaskPoolOptions, TaskPoolThreadAssignmentPolicy};
+    let threads = std::env::var("SPRUNG_BENCH_COMPUTE_THREADS")
+        .ok()
+        .and_then(|threads| threads.parse::<usize>().ok());
+    let mut task_pool_options = TaskPoolOptions::default();
+    if let Some(threads) = threads {
+        task_pool_options.compute = TaskPoolThreadAssignmentPolicy {
+            min_threads: threads,
+            max_threads: threads,
+            ..task_pool_options.compute
+        };
+    }
+    MinimalPlugins.set(TaskPoolPlugin { task_pool_options })
+}
+
 /// What animates the entities.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Method {
@@ -160,7 +180,7 @@ impl Method {
     /// `propagate`), run for a few frames so that the springs at rest sleep.
     pub(crate) fn app(self, count: usize, propagate: bool) -> App {
         let mut app = App::new();
-        app.add_plugins(MinimalPlugins)
+        app.add_plugins(minimal_plugins())
             .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f32(
                 FRAME,
             )));
