@@ -1,8 +1,10 @@
 //! Where the systems run: before transform propagation, without ambiguities.
 
-use bevy::ecs::schedule::{LogLevel, ScheduleBuildSettings, Schedules};
+use bevy::ecs::intern::Interned;
+use bevy::ecs::schedule::{LogLevel, ScheduleBuildSettings, ScheduleLabel, Schedules};
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringUpdate;
 
 use crate::harness::{app, run};
 
@@ -52,61 +54,87 @@ fn no_ambiguities_with_the_plugins_systems() {
     let mut app = app(60);
     // A user property on Transform as well: it must be ordered against the built-in ones.
     app.add_plugins(SpringPropertyPlugin::<crate::properties::ScaleX>::default());
-    app.edit_schedule(PostUpdate, |schedule| {
-        schedule.set_build_settings(ScheduleBuildSettings {
-            ambiguity_detection: LogLevel::Warn,
-            ..default()
+    for label in [PostUpdate.intern(), SpringUpdate.intern()] {
+        app.edit_schedule(label, |schedule| {
+            schedule.set_build_settings(ScheduleBuildSettings {
+                ambiguity_detection: LogLevel::Warn,
+                ..default()
+            });
         });
-    });
+    }
     app.world_mut().spawn((
         Transform::default(),
         TranslationSpring::new(Spring::snappy(), Vec3::X),
         RotationSpring::new(Spring::snappy(), Quat::from_rotation_y(0.5)),
         ScaleSpring::new(Spring::snappy(), Vec3::splat(2.0)),
+        PropertySpring::<crate::properties::ScaleX>::new(Spring::snappy(), 3.0),
     ));
     run(&mut app, 3);
     // The names are there to be matched (Bevy's `debug` feature), so the check is not vacuous.
     assert!(spring_system_runs(&app).len() >= 10);
     let world = app.world();
-    let schedule = world.resource::<Schedules>().get(PostUpdate).unwrap();
-    // Named through the executable schedule: the graph's conflict list may also hold a sync
-    // point Bevy has since replaced (its key is gone and `to_string` would panic on it).
-    let names: std::collections::HashMap<_, _> = schedule
-        .systems()
-        .unwrap()
-        .map(|(key, system)| (key, system.name().to_string()))
-        .collect();
-    let ours: Vec<_> = schedule
-        .graph()
-        .conflicting_systems()
-        .iter()
-        .filter_map(|(a, b, _)| Some((names.get(a)?, names.get(b)?)))
-        .filter(|(a, b)| a.contains("bevy_sprung") || b.contains("bevy_sprung"))
-        .collect();
-    assert!(ours.is_empty(), "ambiguities: {ours:#?}");
+    for label in [PostUpdate.intern(), SpringUpdate.intern()] {
+        let schedule = world.resource::<Schedules>().get(label).unwrap();
+        // Named through the executable schedule: the graph's conflict list may also hold a sync
+        // point Bevy has since replaced (its key is gone and `to_string` would panic on it).
+        let names: std::collections::HashMap<_, _> = schedule
+            .systems()
+            .unwrap()
+            .map(|(key, system)| (key, system.name().to_string()))
+            .collect();
+        let ours: Vec<_> = schedule
+            .graph()
+            .conflicting_systems()
+            .iter()
+            .filter_map(|(a, b, _)| Some((names.get(a)?, names.get(b)?)))
+            .filter(|(a, b)| a.contains("bevy_sprung") || b.contains("bevy_sprung"))
+            .collect();
+        assert!(ours.is_empty(), "ambiguities in {label:?}: {ours:#?}");
+    }
 }
 
-/// The last-run ticks of the plugin's systems in `PreUpdate` (interaction states, shakes taken
-/// off) and `PostUpdate` (springs, choreography, juice).
+/// The schedules the plugin's systems run in: `PreUpdate` (interaction states, shakes taken
+/// off), `PostUpdate` (the spring schedule's runner, choreography, juice) and [`SpringUpdate`]
+/// (the properties' systems).
+fn spring_schedules() -> [Interned<dyn ScheduleLabel>; 3] {
+    [
+        PreUpdate.intern(),
+        PostUpdate.intern(),
+        SpringUpdate.intern(),
+    ]
+}
+
+/// The last-run ticks of the plugin's systems in [`spring_schedules`].
 fn spring_system_runs(app: &App) -> Vec<(String, u32)> {
-    use bevy::ecs::schedule::ScheduleLabel;
     let schedules = app.world().resource::<Schedules>();
-    [PreUpdate.intern(), PostUpdate.intern()]
+    spring_schedules()
         .into_iter()
-        .flat_map(|label| schedules.get(label).unwrap().systems().unwrap())
+        // A schedule that never ran (the spring schedule, before any spring) has no systems.
+        .filter_map(|label| schedules.get(label).unwrap().systems().ok())
+        .flatten()
         .filter(|(_, system)| system.name().to_string().contains("bevy_sprung"))
         .map(|(_, system)| (system.name().to_string(), system.get_last_run().get()))
         .collect()
 }
 
-/// With the plugin and no springs, none of the spring systems runs (their run conditions skip
-/// them); spawning a spring starts them.
+/// With the plugin and no springs, no property's systems are even in a schedule and none of
+/// the plugin's systems runs (their run conditions skip them); spawning a spring brings in and
+/// runs its property's systems, and only those.
 #[test]
 fn no_springs_no_work() {
     let mut app = app(60);
     run(&mut app, 2);
     let idle = spring_system_runs(&app);
-    assert!(idle.len() >= 8, "{idle:?}");
+    assert!(idle.len() >= 5, "{idle:?}");
+    let in_spring_update = |app: &App| {
+        let schedules = app.world().resource::<Schedules>();
+        schedules.get(SpringUpdate).unwrap().systems_len()
+    };
+    assert_eq!(
+        in_spring_update(&app),
+        0,
+        "property systems without springs"
+    );
     run(&mut app, 5);
     assert_eq!(
         spring_system_runs(&app),
@@ -117,15 +145,43 @@ fn no_springs_no_work() {
         Transform::default(),
         TranslationSpring::new(Spring::snappy(), Vec3::X),
     ));
-    run(&mut app, 2);
+    // The first frame brings the systems in; which run is seen over the next.
+    run(&mut app, 1);
+    let before = spring_system_runs(&app);
+    run(&mut app, 1);
     let busy = spring_system_runs(&app);
     let ran: Vec<_> = busy
         .iter()
-        .zip(&idle)
+        .zip(&before)
         .filter(|(a, b)| a.1 != b.1)
-        .map(|(a, _)| &a.0)
+        .map(|(a, _)| a.0.as_str())
         .collect();
-    assert_eq!(ran.len(), 2, "only the translation systems run: {ran:?}");
+    // The spring schedule's runner, and the translation springs' wake and step.
+    assert_eq!(ran.len(), 3, "{ran:?}");
+    assert!(
+        ran.iter().any(|name| name.contains("run_spring_update")),
+        "{ran:?}"
+    );
+    assert_eq!(
+        ran.iter()
+            .filter(|name| name.contains("Translation") && name.contains("_springs"))
+            .count(),
+        2,
+        "only the translation systems run: {ran:?}"
+    );
+    // Only translation's systems (and the followers', which move translation springs) came in.
+    let added: Vec<_> = busy
+        .iter()
+        .filter(|(name, _)| !idle.iter().any(|(idle_name, _)| idle_name == name))
+        .map(|(name, _)| name.as_str())
+        .collect();
+    assert!(in_spring_update(&app) >= 3, "{added:?}");
+    assert!(
+        added
+            .iter()
+            .all(|name| name.contains("Translation") || name.contains("follow")),
+        "{added:?}"
+    );
 }
 
 /// Adding a property's plugin again (a library and the app both asking for it) changes nothing:
@@ -141,4 +197,39 @@ fn adding_a_property_twice_is_harmless() {
         crate::harness::exact(&spring, 0.0, 10.0, crate::harness::elapsed(&app)).position;
     let x = f64::from(crate::harness::translation(&app, entity).x);
     assert!((x - expected).abs() < 1e-4, "{x} vs {expected}");
+}
+
+/// A spring on a new property added while the spring schedule runs (an observer of another
+/// spring settling) brings its property's systems in for the next frame, and arrives.
+#[test]
+fn a_first_spring_added_during_the_spring_schedule_moves_from_the_next_frame() {
+    let mut app = app(60);
+    app.add_observer(
+        |settled: On<SpringSettled<Translation>>, mut commands: Commands| {
+            commands
+                .entity(settled.entity)
+                .insert(ScaleSpring::new(Spring::snappy(), Vec3::splat(3.0)));
+        },
+    );
+    let entity = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::snappy(), Vec3::X),
+        ))
+        .id();
+    run(&mut app, 300);
+    let world = app.world();
+    assert!(
+        world.get::<ScaleSpring>(entity).is_some(),
+        "the observer ran"
+    );
+    assert!(
+        world.get::<SpringAsleep<Scale>>(entity).is_some(),
+        "the scale spring settled"
+    );
+    assert_eq!(
+        world.get::<Transform>(entity).unwrap().scale,
+        Vec3::splat(3.0)
+    );
 }

@@ -81,28 +81,74 @@ fn measured_warm_up(app: &mut App, method: Method, vary: bool) {
     }
 }
 
+/// Frames counted in the empty app.
+const EMPTY_FRAMES: u64 = 100;
+
+/// An app with nothing to spring (`TransformPlugin`, as any app with something to spring has),
+/// with or without [`SpringPlugin`](bevy_sprung::SpringPlugin), or with it and `springs`
+/// translation springs that keep moving, as callgrind runs it.
+fn empty(plugin: bool, springs: usize, frames: u64) {
+    use bevy_sprung::prelude::{Spring, TranslationSpring};
+    let mut app = App::new();
+    app.add_plugins((scenarios::minimal_plugins(), TransformPlugin));
+    if plugin {
+        app.add_plugins(bevy_sprung::SpringPlugin::default());
+    }
+    for index in 0..springs {
+        #[expect(clippy::cast_precision_loss, reason = "a few entities")]
+        let target = Vec3::splat(1e4 * (index + 1) as f32);
+        app.world_mut().spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::molasses(), target),
+        ));
+    }
+    app.finish();
+    app.cleanup();
+    for _ in 0..10 {
+        app.update();
+    }
+    measured_updates(&mut app, frames);
+}
+
+/// The whole frames callgrind counts in the empty app.
+#[inline(never)]
+fn measured_updates(app: &mut App, frames: u64) {
+    for _ in 0..frames {
+        app.update();
+    }
+}
+
 /// Runs one scene under callgrind and returns the instructions counted in [`measured`].
 fn count(method: Method, vary: bool) -> u64 {
-    let exe = std::env::current_exe().expect("the bench binary");
-    let out = std::env::temp_dir().join(format!("callgrind.sprung.{}.{vary}", method.name()));
-    let status = Command::new("valgrind")
-        .arg("--tool=callgrind")
-        .arg("--collect-atstart=no")
-        .arg("--toggle-collect=*instructions::measured")
-        .arg(format!("--callgrind-out-file={}", out.display()))
-        .arg(&exe)
-        .args([
+    callgrind(
+        "*instructions::measured",
+        &[
             "one",
             &method.name(),
             &COUNT.to_string(),
             &FRAMES.to_string(),
             &vary.to_string(),
-        ])
+        ],
+    )
+}
+
+/// The instructions counted in `function` (a callgrind pattern) when this binary runs with
+/// `args` under callgrind.
+fn callgrind(function: &str, args: &[&str]) -> u64 {
+    let exe = std::env::current_exe().expect("the bench binary");
+    let out = std::env::temp_dir().join(format!("callgrind.sprung.{}", args.join(".")));
+    let status = Command::new("valgrind")
+        .arg("--tool=callgrind")
+        .arg("--collect-atstart=no")
+        .arg(format!("--toggle-collect={function}"))
+        .arg(format!("--callgrind-out-file={}", out.display()))
+        .arg(&exe)
+        .args(args)
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
         .status()
         .expect("valgrind runs (install it: apt-get install valgrind)");
-    assert!(status.success(), "callgrind failed for {}", method.name());
+    assert!(status.success(), "callgrind failed for {args:?}");
     let text = std::fs::read_to_string(&out).expect("callgrind output");
     let _removed = std::fs::remove_file(&out);
     text.lines()
@@ -120,6 +166,14 @@ fn main() {
             args[2].parse().expect("a count"),
             args[3].parse().expect("a frame count"),
             args[4].parse().expect("true or false"),
+        );
+        return;
+    }
+    if args.first().map(String::as_str) == Some("empty") {
+        empty(
+            args[1].parse().expect("true or false"),
+            args[2].parse().expect("a spring count"),
+            args[3].parse().expect("a frame count"),
         );
         return;
     }
@@ -164,5 +218,20 @@ fn main() {
     println!(
         "  at rest / active:                            {:.3}",
         get(Method::SpringsAtRest, false) / get(shared, false)
+    );
+    let frames = EMPTY_FRAMES.to_string();
+    let [without, with, one] =
+        [("false", "0"), ("true", "0"), ("true", "1")].map(|(plugin, springs)| {
+            callgrind(
+                "*instructions::measured_updates",
+                &["empty", plugin, springs, &frames],
+            ) / EMPTY_FRAMES
+        });
+    println!(
+        "\nwhole frames of an app with TransformPlugin, instructions per frame:\n  \
+         without SpringPlugin {without}; with it and no springs {with} ({:+}); \
+         with one moving translation spring {one} ({:+})",
+        i128::from(with) - i128::from(without),
+        i128::from(one) - i128::from(without)
     );
 }

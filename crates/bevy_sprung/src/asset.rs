@@ -464,14 +464,14 @@ where
     ValueOf<P>: DeserializeOwned,
 {
     fn build(&self, app: &mut App) {
-        let schedule = crate::spring::spring_schedule(app);
-        app.register_type::<UseSequencePreset<P>>().add_systems(
-            schedule,
-            apply_sequence_presets::<P>
-                .before(crate::spring::PropertySystems::<P>::default())
-                .in_set(crate::spring::SpringSystems)
-                .run_if(any_with_component::<UseSequencePreset<P>>),
-        );
+        app.register_type::<UseSequencePreset<P>>();
+        crate::spring::add_property_systems(app, &[core::any::TypeId::of::<P>()], |schedule| {
+            schedule.add_systems(
+                apply_sequence_presets::<P>
+                    .before(crate::spring::PropertySystems::<P>::default())
+                    .run_if(any_with_component::<UseSequencePreset<P>>),
+            );
+        });
     }
 
     fn is_unique(&self) -> bool {

@@ -1,9 +1,11 @@
 //! Followers: a camera (or anything) that springs after another entity and looks at it.
 
+use core::any::TypeId;
+
 use bevy::prelude::*;
 
 use crate::clock::SpringTime;
-use crate::spring::{PropertySystems, SpringSystems, SpringTargetMut, spring_schedule};
+use crate::spring::{PropertySystems, SpringTargetMut, add_property_systems};
 use crate::transform::{Rotation, RotationSpring, Translation, TranslationSpring};
 
 /// How the followed entity moves, which decides how its motion is sampled.
@@ -226,23 +228,27 @@ pub struct FollowPlugin;
 
 impl Plugin for FollowPlugin {
     fn build(&self, app: &mut App) {
-        let schedule = spring_schedule(app);
         app.register_type::<SpringFollow>()
             .register_type::<TargetMotion>()
             .add_systems(
                 FixedPostUpdate,
                 sample_fixed_targets.run_if(any_with_component::<SpringFollow>),
-            )
-            .add_systems(
-                schedule,
-                (
-                    follow_targets.before(PropertySystems::<Translation>::default()),
-                    aim_followers
-                        .after(PropertySystems::<Translation>::default())
-                        .before(PropertySystems::<Rotation>::default()),
-                )
-                    .in_set(SpringSystems)
-                    .run_if(any_with_component::<SpringFollow>),
             );
+        // A follower moves its translation spring, and aims its rotation spring.
+        add_property_systems(
+            app,
+            &[TypeId::of::<Translation>(), TypeId::of::<Rotation>()],
+            |schedule| {
+                schedule.add_systems(
+                    (
+                        follow_targets.before(PropertySystems::<Translation>::default()),
+                        aim_followers
+                            .after(PropertySystems::<Translation>::default())
+                            .before(PropertySystems::<Rotation>::default()),
+                    )
+                        .run_if(any_with_component::<SpringFollow>),
+                );
+            },
+        );
     }
 }

@@ -1,10 +1,12 @@
 //! Turns by an angle, for motion that orientations cannot express: whole turns.
 
+use core::any::TypeId;
+
 use bevy::prelude::*;
 
 use crate::space::Linear;
 use crate::spring::{
-    PropertySpring, PropertySystems, SpringPropertyPlugin, spring_schedule, step_springs,
+    PropertySpring, PropertySystems, SpringPropertyPlugin, add_property_systems, step_springs,
 };
 use crate::spring_property;
 
@@ -139,25 +141,24 @@ pub struct SpinPlugin;
 
 impl Plugin for SpinPlugin {
     fn build(&self, app: &mut App) {
-        let schedule = spring_schedule(app);
         #[cfg(feature = "asset")]
         app.add_plugins(crate::asset::SequenceAssetPlugin::<SpinAngle>::default());
         app.add_plugins(SpringPropertyPlugin::<SpinAngle>::default())
-            .register_type::<Spin>()
-            .add_systems(
-                schedule,
+            .register_type::<Spin>();
+        add_property_systems(app, &[TypeId::of::<SpinAngle>()], |schedule| {
+            schedule.add_systems(
                 apply_spin
                     .after(step_springs::<SpinAngle>)
                     .in_set(PropertySystems::<SpinAngle>::default())
                     .run_if(any_with_component::<Spin>),
             );
-        #[cfg(feature = "ui")]
-        app.add_systems(
-            schedule,
-            apply_ui_spin
-                .after(step_springs::<SpinAngle>)
-                .in_set(PropertySystems::<SpinAngle>::default())
-                .run_if(any_with_component::<Spin>),
-        );
+            #[cfg(feature = "ui")]
+            schedule.add_systems(
+                apply_ui_spin
+                    .after(step_springs::<SpinAngle>)
+                    .in_set(PropertySystems::<SpinAngle>::default())
+                    .run_if(any_with_component::<Spin>),
+            );
+        });
     }
 }

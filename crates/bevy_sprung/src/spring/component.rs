@@ -4,11 +4,14 @@ mod step;
 
 pub(crate) use step::Stepped;
 
+use core::any::TypeId;
 use core::fmt;
 use core::marker::PhantomData;
 use core::ops::DerefMut;
 
 use bevy::ecs::change_detection::DetectChangesMut;
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::world::DeferredWorld;
 use bevy::log::warn_once;
 use bevy::math::VectorSpace;
 use bevy::prelude::*;
@@ -65,6 +68,7 @@ use crate::space::{Carried, SpringSpace, SpringVector};
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]
+#[component(on_add)]
 #[reflect(Component, Debug, Clone)]
 pub struct PropertySpring<P: SpringProperty> {
     spring: Spring<f32>,
@@ -76,6 +80,13 @@ pub struct PropertySpring<P: SpringProperty> {
     /// What the spring carries between frames; not part of its configuration.
     #[reflect(ignore)]
     motion: Motion<P>,
+}
+
+impl<P: SpringProperty> PropertySpring<P> {
+    /// The component hook: the first spring on `P` brings in the property's systems.
+    fn on_add(mut world: DeferredWorld, _: HookContext) {
+        super::plugin::spring_added(&mut world, TypeId::of::<P>());
+    }
 }
 
 /// The state a spring carries between its steps.

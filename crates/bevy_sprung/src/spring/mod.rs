@@ -12,7 +12,9 @@ mod tests;
 
 pub use component::{PropertySpring, SpringAsleep, SpringInputError, SpringTargetMut};
 pub use event::SpringSettled;
-pub use plugin::{PropertySystems, SpringPropertyPlugin, SpringSchedulePlugin, SpringSystems};
+pub use plugin::{
+    PropertySystems, SpringPropertyPlugin, SpringSchedulePlugin, SpringSystems, SpringUpdate,
+};
 
-pub(crate) use plugin::spring_schedule;
+pub(crate) use plugin::{add_property_systems, spring_schedule};
 pub(crate) use systems::step_springs;

@@ -6,6 +6,7 @@ use core::marker::PhantomData;
 use bevy::app::AnimationSystems;
 use bevy::ecs::intern::Interned;
 use bevy::ecs::schedule::{ScheduleLabel, SystemSet};
+use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 
@@ -15,17 +16,59 @@ use crate::choreography::{SpringGroup, SpringSequence, drive_sequences, note_awa
 use crate::clock::SpringClockPlugin;
 use crate::property::SpringProperty;
 
-/// All of the plugin's systems. In `PostUpdate` (the default schedule) the set runs in
+/// Where the springs step, in the schedule they step in: the one system that runs
+/// [`SpringUpdate`]. In `PostUpdate` (the default schedule) the set runs in
 /// [`AnimationSystems`] and before [`TransformSystems::Propagate`], so `GlobalTransform` (and
 /// `bevy_ui`'s layout, which runs after `AnimationSystems`) see this frame's sprung values.
 /// Order your systems against it: write targets before it, read sprung values after it.
 #[derive(SystemSet, Debug, Clone, PartialEq, Eq, Hash)]
 pub struct SpringSystems;
 
-/// The systems of property `P`: in [`SpringSystems`], after the set of the property registered
+/// The schedule of the spring systems, run from [`SpringSystems`] once per run of the schedule
+/// the springs step in (`PostUpdate`, or the one
+/// [`SpringPlugin::in_schedule`](crate::SpringPlugin::in_schedule) names).
+///
+/// What a scene does not spring costs nothing: the systems of a property join this schedule
+/// when the first spring on that property is added, and the schedule runs only once some
+/// property has had a spring. An app with the plugin and no springs runs one skipped system a
+/// frame. Order systems of your own between properties here, against [`PropertySystems`].
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+/// use bevy_sprung::spring::{PropertySystems, SpringUpdate};
+/// use bevy_sprung::transform::{Rotation, Translation};
+///
+/// // Runs after the translation springs moved and before the rotation springs step.
+/// fn aim(mut aimed: Query<(&Transform, &mut RotationSpring)>) {
+///     for (transform, mut rotation) in &mut aimed {
+///         let heading = Quat::from_rotation_z(transform.translation.y.atan2(transform.translation.x));
+///         rotation.set_target_if_neq(heading);
+///     }
+/// }
+///
+/// let mut app = App::new();
+/// app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(
+///     SpringUpdate,
+///     aim.after(PropertySystems::<Translation>::default())
+///         .before(PropertySystems::<Rotation>::default()),
+/// );
+/// app.world_mut().spawn((
+///     Transform::default(),
+///     TranslationSpring::new(Spring::snappy(), Vec3::new(100.0, 50.0, 0.0)),
+///     RotationSpring::new(Spring::snappy(), Quat::IDENTITY),
+/// ));
+/// app.update();
+/// ```
+#[derive(ScheduleLabel, Debug, Clone, PartialEq, Eq, Hash)]
+pub struct SpringUpdate;
+
+/// The systems of property `P`: in [`SpringUpdate`], after the set of the property registered
 /// before it, so that properties of one component (translation, rotation and scale of a
-/// `Transform`) never run in an ambiguous order. Order against it to run between two
-/// properties (a follower retargets its translation spring before `PropertySystems<Translation>`).
+/// `Transform`) never run in an ambiguous order. Order against it, in [`SpringUpdate`], to run
+/// between two properties (a follower retargets its translation spring before
+/// `PropertySystems<Translation>`).
 #[derive(SystemSet)]
 pub struct PropertySystems<P: SpringProperty>(PhantomData<fn() -> P>);
 
@@ -69,6 +112,76 @@ pub(crate) struct SpringSchedule {
     last_property: Option<Interned<dyn SystemSet>>,
     /// The properties already added (adding one twice is harmless).
     registered: Vec<TypeId>,
+    /// What adds systems that wait for the first spring on any of their properties.
+    waiting: Vec<(Vec<TypeId>, AddSystems)>,
+    /// What adds systems whose property has a spring now, run on [`SpringUpdate`] before its
+    /// next run.
+    ready: Vec<AddSystems>,
+    /// The properties that have had a spring.
+    in_use: Vec<TypeId>,
+}
+
+impl SpringSchedule {
+    /// Property `property` has a spring: its systems are added before the next step.
+    fn use_property(&mut self, property: TypeId) {
+        if self.in_use.contains(&property) {
+            return;
+        }
+        self.in_use.push(property);
+        let (now, later) = core::mem::take(&mut self.waiting)
+            .into_iter()
+            .partition(|(properties, _)| properties.contains(&property));
+        self.waiting = later;
+        self.ready
+            .extend(now.into_iter().map(|(_, systems)| systems));
+    }
+}
+
+/// Adds systems to [`SpringUpdate`].
+pub(crate) type AddSystems = fn(&mut Schedule);
+
+/// The hook of a spring component on property `property` being added: the first one brings in
+/// the property's systems. One lookup in a short list per spring added.
+pub(crate) fn spring_added(world: &mut DeferredWorld, property: TypeId) {
+    let in_use = world
+        .get_resource::<SpringSchedule>()
+        .is_none_or(|bookkeeping| bookkeeping.in_use.contains(&property));
+    if !in_use && let Some(mut bookkeeping) = world.get_resource_mut::<SpringSchedule>() {
+        bookkeeping.use_property(property);
+    }
+}
+
+/// Runs `systems` on [`SpringUpdate`] once a spring on any of `properties` exists (before its
+/// next run, if one does).
+pub(crate) fn add_property_systems(app: &mut App, properties: &[TypeId], systems: AddSystems) {
+    spring_schedule(app);
+    let mut bookkeeping = app.world_mut().resource_mut::<SpringSchedule>();
+    if properties
+        .iter()
+        .any(|property| bookkeeping.in_use.contains(property))
+    {
+        bookkeeping.ready.push(systems);
+    } else {
+        bookkeeping.waiting.push((properties.to_vec(), systems));
+    }
+}
+
+/// Runs [`SpringUpdate`], first adding the systems of properties that got their first spring.
+fn run_spring_update(world: &mut World) {
+    let ready = core::mem::take(&mut world.resource_mut::<SpringSchedule>().ready);
+    if !ready.is_empty() {
+        world.schedule_scope(SpringUpdate, |_, schedule| {
+            for add in ready {
+                add(schedule);
+            }
+        });
+    }
+    world.run_schedule(SpringUpdate);
+}
+
+/// Whether any property has had a spring (before that, [`SpringUpdate`] has nothing to run).
+fn any_property_in_use(bookkeeping: Res<SpringSchedule>) -> bool {
+    !bookkeeping.in_use.is_empty()
 }
 
 /// Puts [`SpringSystems`] into the schedule the springs step in (part of
@@ -105,7 +218,16 @@ impl Plugin for SpringSchedulePlugin {
             label: self.schedule,
             last_property: None,
             registered: Vec::new(),
+            waiting: Vec::new(),
+            ready: Vec::new(),
+            in_use: Vec::new(),
         });
+        app.init_schedule(SpringUpdate).add_systems(
+            self.schedule,
+            run_spring_update
+                .in_set(SpringSystems)
+                .run_if(any_property_in_use),
+        );
         if self.schedule == PostUpdate.intern() {
             app.configure_sets(
                 PostUpdate,
@@ -152,7 +274,7 @@ impl<P: SpringProperty> Default for SpringPropertyPlugin<P> {
 
 impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
     fn build(&self, app: &mut App) {
-        let schedule = spring_schedule(app);
+        spring_schedule(app);
         let mut bookkeeping = app.world_mut().resource_mut::<SpringSchedule>();
         let property = TypeId::of::<P>();
         if bookkeeping.registered.contains(&property) {
@@ -164,59 +286,61 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
             .replace(PropertySystems::<P>::default().intern());
         app.register_type::<PropertySpring<P>>()
             .register_type::<SpringAsleep<P>>()
-            .register_type::<SpringSequence<P>>()
-            .add_systems(
-                schedule,
-                (
-                    drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>
-                        .run_if(any_with_component::<SpringSequence<P>>),
-                    (wake_springs::<P>, step_springs::<P>)
-                        .chain()
-                        .run_if(any_with_component::<PropertySpring<P>>),
-                    note_awake::<PropertySpring<P>, SpringAsleep<P>>
-                        .run_if(any_with_component::<SpringGroup>),
-                )
-                    .chain()
-                    .in_set(PropertySystems::<P>::default()),
-            )
-            .configure_sets(
-                schedule,
-                PropertySystems::<P>::default().in_set(SpringSystems),
-            );
-        if let Some(previous) = previous {
-            app.configure_sets(schedule, PropertySystems::<P>::default().after(previous));
-        }
-        // Pointer states retarget every property's springs, before sequences drive them.
+            .register_type::<SpringSequence<P>>();
         #[cfg(feature = "picking")]
-        app.register_type::<crate::interaction::InteractionTargets<P>>()
-            .add_systems(
-                schedule,
-                crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>
-                    .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>)
-                    .in_set(PropertySystems::<P>::default())
-                    .run_if(any_with_component::<crate::interaction::InteractionTargets<P>>),
-            );
-        // Presets from files reach every property's springs, before pointer states, sequences
-        // or the step use them.
-        #[cfg(feature = "asset")]
-        {
-            let presets = crate::asset::apply_presets::<P, PropertySpring<P>>
-                .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>);
-            #[cfg(feature = "picking")]
-            let presets =
-                presets.before(crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>);
-            app.add_systems(
-                schedule,
-                presets.in_set(PropertySystems::<P>::default()).run_if(
-                    resource_exists::<Assets<crate::asset::SpringPreset>>
-                        .and_then(any_with_component::<crate::asset::UseSpringPreset>),
-                ),
+        app.register_type::<crate::interaction::InteractionTargets<P>>();
+        add_property_systems(app, &[property], add_systems_of::<P>);
+        if let Some(previous) = previous {
+            app.configure_sets(
+                SpringUpdate,
+                PropertySystems::<P>::default().after(previous),
             );
         }
     }
 
     fn is_unique(&self) -> bool {
         false
+    }
+}
+
+/// The systems of property `P`, added with its first spring.
+fn add_systems_of<P: SpringProperty>(schedule: &mut Schedule) {
+    schedule.add_systems(
+        (
+            drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>
+                .run_if(any_with_component::<SpringSequence<P>>),
+            (wake_springs::<P>, step_springs::<P>)
+                .chain()
+                .run_if(any_with_component::<PropertySpring<P>>),
+            note_awake::<PropertySpring<P>, SpringAsleep<P>>
+                .run_if(any_with_component::<SpringGroup>),
+        )
+            .chain()
+            .in_set(PropertySystems::<P>::default()),
+    );
+    // Pointer states retarget every property's springs, before sequences drive them.
+    #[cfg(feature = "picking")]
+    schedule.add_systems(
+        crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>
+            .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>)
+            .in_set(PropertySystems::<P>::default())
+            .run_if(any_with_component::<crate::interaction::InteractionTargets<P>>),
+    );
+    // Presets from files reach every property's springs, before pointer states, sequences or
+    // the step use them.
+    #[cfg(feature = "asset")]
+    {
+        let presets = crate::asset::apply_presets::<P, PropertySpring<P>>
+            .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>);
+        #[cfg(feature = "picking")]
+        let presets =
+            presets.before(crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>);
+        schedule.add_systems(
+            presets.in_set(PropertySystems::<P>::default()).run_if(
+                resource_exists::<Assets<crate::asset::SpringPreset>>
+                    .and_then(any_with_component::<crate::asset::UseSpringPreset>),
+            ),
+        );
     }
 }
 
