@@ -13,6 +13,7 @@ mod scenarios;
 
 use std::process::Command;
 
+use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
 use scenarios::{FRAME, Method, varying_dt};
 
@@ -61,6 +62,12 @@ fn measured(app: &mut App, method: Method, frames: u64, vary: bool) {
 /// One scene, as callgrind runs it.
 fn one(method: Method, count: usize, frames: u64, vary: bool) {
     let mut app = method.app(count, false);
+    // Every schedule (the spring schedule too) on the calling thread: callgrind counts only the
+    // thread `measured` runs on. The driver runs this with no compute threads, so `par_iter`
+    // batches run on this thread as well.
+    for (_, schedule) in app.world_mut().resource_mut::<Schedules>().iter_mut() {
+        schedule.set_executor(SingleThreadedExecutor::new());
+    }
     // Warm-up: the first frames fill caches and allocate.
     measured_warm_up(&mut app, method, vary);
     measured(&mut app, method, frames, vary);
@@ -122,6 +129,7 @@ fn measured_updates(app: &mut App, frames: u64) {
 fn count(method: Method, vary: bool) -> u64 {
     callgrind(
         "*instructions::measured",
+        Some(0),
         &[
             "one",
             &method.name(),
@@ -132,12 +140,17 @@ fn count(method: Method, vary: bool) -> u64 {
     )
 }
 
-/// The instructions counted in `function` (a callgrind pattern) when this binary runs with
-/// `args` under callgrind.
-fn callgrind(function: &str, args: &[&str]) -> u64 {
+/// The instructions counted in `function` (a callgrind pattern, on the thread that calls it)
+/// when this binary runs with `args` under callgrind, with `compute_threads` in the compute
+/// pool (`None`: Bevy's default).
+fn callgrind(function: &str, compute_threads: Option<usize>, args: &[&str]) -> u64 {
     let exe = std::env::current_exe().expect("the bench binary");
     let out = std::env::temp_dir().join(format!("callgrind.sprung.{}", args.join(".")));
-    let status = Command::new("valgrind")
+    let mut command = Command::new("valgrind");
+    if let Some(threads) = compute_threads {
+        command.env("SPRUNG_BENCH_COMPUTE_THREADS", threads.to_string());
+    }
+    let status = command
         .arg("--tool=callgrind")
         .arg("--collect-atstart=no")
         .arg(format!("--toggle-collect={function}"))
@@ -222,8 +235,11 @@ fn main() {
     let frames = EMPTY_FRAMES.to_string();
     let [without, with, one] =
         [("false", "0"), ("true", "0"), ("true", "1")].map(|(plugin, springs)| {
+            // As games run: the multi-threaded executor, whose bookkeeping (what idle systems
+            // cost) runs on the calling thread.
             callgrind(
                 "*instructions::measured_updates",
+                None,
                 &["empty", plugin, springs, &frames],
             ) / EMPTY_FRAMES
         });
