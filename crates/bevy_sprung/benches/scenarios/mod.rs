@@ -137,6 +137,9 @@ pub(crate) enum Method {
     SmoothNudge,
     /// bevy_tweening 0.16.
     Tweening,
+    /// No animation: a system that moves every translation by a constant step. The floor of a
+    /// frame that changes every `Transform` (change ticks, and propagation when it runs).
+    Touch,
 }
 
 impl Method {
@@ -157,6 +160,7 @@ impl Method {
             Self::BareExact => "bare_exact".into(),
             Self::SmoothNudge => "smooth_nudge".into(),
             Self::Tweening => "bevy_tweening".into(),
+            Self::Touch => "touch".into(),
         }
     }
 
@@ -172,7 +176,8 @@ impl Method {
             | Self::EulerUiScale
             | Self::BareExact
             | Self::SmoothNudge
-            | Self::Tweening => Update.intern(),
+            | Self::Tweening
+            | Self::Touch => Update.intern(),
         }
     }
 
@@ -208,6 +213,9 @@ impl Method {
             }
             Self::Tweening => {
                 app.add_plugins(TweeningPlugin);
+            }
+            Self::Touch => {
+                app.add_systems(Update, touch);
             }
         }
         self.spawn(app.world_mut(), count);
@@ -281,6 +289,9 @@ impl Method {
                     (0..count)
                         .map(|i| (Transform::from_translation(start(i)), HandTarget(target(i)))),
                 );
+            }
+            Self::Touch => {
+                world.spawn_batch((0..count).map(|i| Transform::from_translation(start(i))));
             }
             Self::Tweening => {
                 // A 1 s ease-in-out there and back, forever: active every frame.
@@ -368,6 +379,13 @@ pub(crate) struct HandTarget2(Vec2);
 fn euler_parameters() -> (f32, f32) {
     let spring = sprung_spring(HALF_LIFE);
     (spring.stiffness(), spring.damping())
+}
+
+/// Moves every translation a little: no state but the `Transform`.
+fn touch(mut query: Query<&mut Transform>) {
+    for mut transform in &mut query {
+        transform.translation.x += 1e-3;
+    }
 }
 
 /// What a game writes by hand: a semi-implicit Euler spring, unit mass, shared parameters.

@@ -33,6 +33,10 @@ pub struct SpringSystems;
 /// property has had a spring. An app with the plugin and no springs runs one skipped system a
 /// frame. Order systems of your own between properties here, against [`PropertySystems`].
 ///
+/// The runner is an exclusive system, as Bevy's fixed-timestep loop is: no other system of the
+/// outer schedule runs beside it while the springs step (they step on the compute pool's
+/// threads themselves).
+///
 /// # Example
 /// ```
 /// use bevy::prelude::*;
