@@ -190,7 +190,8 @@ fn any_property_in_use(bookkeeping: Res<SpringSchedule>) -> bool {
 
 /// Puts [`SpringSystems`] into the schedule the springs step in (part of
 /// [`SpringPlugin`](crate::SpringPlugin)): in `PostUpdate`, inside [`AnimationSystems`] and
-/// before transform propagation; in any other schedule, as a plain set.
+/// before transform propagation; in any other schedule, as a plain set. The set holds the
+/// system that runs [`SpringUpdate`].
 #[derive(Debug, Clone)]
 pub struct SpringSchedulePlugin {
     /// The schedule: `PostUpdate` by default, `FixedUpdate` for determinism with a
@@ -264,7 +265,9 @@ pub(crate) fn spring_schedule(app: &mut App) -> Interned<dyn ScheduleLabel> {
 }
 
 /// Adds the systems for one [`SpringProperty`]: springing a field of your own component takes
-/// a [`spring_property!`](crate::spring_property) and this plugin. In an app without
+/// a [`spring_property!`](crate::spring_property) and this plugin. The systems join
+/// [`SpringUpdate`], in [`PropertySystems<P>`](PropertySystems), when the first spring on the
+/// property is added (until then the property costs nothing a frame). In an app without
 /// [`SpringPlugin`](crate::SpringPlugin) it adds what springs need to step, with the defaults;
 /// add `SpringPlugin` first to configure them. Adding a property twice (say, once by a library
 /// and once by the app) is harmless.
