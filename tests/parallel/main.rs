@@ -10,7 +10,12 @@ use bevy::prelude::*;
 use bevy::tasks::ComputeTaskPool;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
-use sprung::SpringState;
+#[path = "../plugin/harness.rs"]
+#[expect(
+    dead_code,
+    reason = "the plugin tests' helpers; this binary uses only the exact reference"
+)]
+mod harness;
 
 /// Distinct springs, one per entity: more than the table prepares in one chunk.
 const SPRINGS: usize = 6000;
@@ -21,21 +26,6 @@ const DISTANCE: f32 = 100.0;
 /// How far from its exact position a spring may be after the run: rounding (the error seen is
 /// about `1.2e-5`), and less than half the closest two springs' positions differ by.
 const TOLERANCE: f64 = 1e-4;
-
-/// The exact position, in `f64`, of a 1D spring released at rest at `0` toward `DISTANCE`
-/// after `seconds`.
-fn exact(spring: &Spring, seconds: f64) -> f64 {
-    let spring = sprung::Spring::<f64>::new(
-        f64::from(spring.mass()),
-        f64::from(spring.stiffness()),
-        f64::from(spring.damping()),
-    )
-    .unwrap();
-    spring
-        .transition(seconds)
-        .step(SpringState::new(0.0, 0.0), f64::from(DISTANCE))
-        .position
-}
 
 /// Every spring of a scene stepped on two compute threads with a time step that changes every
 /// frame is where its exact solution is, to rounding: no entity reads another's state or
@@ -84,7 +74,7 @@ fn springs_step_exactly_on_two_compute_threads() {
     assert!(elapsed > 1.9, "{elapsed}");
     let expected: Vec<f64> = springs
         .iter()
-        .map(|spring| exact(spring, elapsed))
+        .map(|spring| harness::exact(spring, 0.0, DISTANCE, elapsed).position)
         .collect();
     let mut worst = 0.0_f64;
     for (entity, expected) in entities.iter().zip(&expected) {
