@@ -2,7 +2,7 @@
 
 mod step;
 
-pub(crate) use step::Stepped;
+pub(crate) use step::{Stepped, UsualStep};
 
 use core::any::TypeId;
 use core::fmt;

@@ -2,13 +2,15 @@
 
 use bevy::ecs::system::ParallelCommands;
 use bevy::prelude::*;
+use bevy::tasks::ComputeTaskPool;
+use bevy::utils::Parallel;
 
 use super::cache::TransitionCache;
-use super::component::{PropertySpring, SpringAsleep, Stepped};
+use super::component::{PropertySpring, SpringAsleep, Stepped, UsualStep};
 use super::event::SpringSettled;
 use super::table::TransitionTable;
 use crate::choreography::{SettleTracker, SpringGroup};
-use crate::clock::SpringTime;
+use crate::clock::{FrameSteps, SpringTime};
 use crate::property::SpringProperty;
 use crate::reduced_motion::{KeepMotion, ReducedMotion};
 
@@ -24,11 +26,19 @@ type Seen = ();
 /// Bevy gives the compute pool the cores left after its I/O and async pools: on a machine with
 /// two cores that is one thread, and the springs step on it alone. See
 /// [`SpringPlugin`](crate::SpringPlugin) for the task-pool setting that gives them both.
+#[cfg_attr(
+    feature = "visibility",
+    expect(
+        clippy::too_many_arguments,
+        reason = "a system's parameters, each a different resource or query"
+    )
+)]
 pub(crate) fn step_springs<P: SpringProperty>(
     time: SpringTime,
     reduced_motion: Option<Res<ReducedMotion>>,
     exempt: Query<(), With<KeepMotion>>,
     mut table: Local<TransitionTable>,
+    caches: Local<Parallel<TransitionCache>>,
     mut springs: Query<
         (Entity, &mut PropertySpring<P>, &mut P::Component),
         (Without<SpringAsleep<P>>, Seen),
@@ -75,25 +85,20 @@ pub(crate) fn step_springs<P: SpringProperty>(
         return;
     }
     let shared: &TransitionTable = table;
-    springs.par_iter_mut().for_each_init(
-        // Boxed: the fold moves its accumulator from entity to entity.
-        Box::<TransitionCache>::default,
-        |cache, (entity, spring, mut component)| {
-            // Changed since this system last ran: by something else than this system, which
-            // marks every spring it steps (a retarget, a kick, an edit through reflection).
-            let untouched = !spring.is_changed();
-            // The spring changes every frame it is stepped; the property only when it moves.
-            let spring = spring.into_inner();
-            let current = P::get(&component);
-            let frame = spring.step(current, steps, false, untouched, (shared, cache));
-            if let Some(value) = frame.write {
-                P::set(&mut component, value);
-            }
-            if frame.outcome == Stepped::Settled {
-                put_to_sleep::<P>(&commands, entity);
-            }
-        },
-    );
+    // A spring's unusual step takes its transition from its thread's cache (kept across
+    // frames): only that path looks the cache up, so the usual step carries nothing from
+    // entity to entity.
+    let caches = &*caches;
+    if ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num()) > 1 {
+        springs.par_iter_mut().for_each(|item| {
+            step_entity(item, steps, shared, caches, &commands);
+        });
+    } else {
+        // One thread (Bevy's default on two cores): a plain loop, the step inlined into it.
+        for item in &mut springs {
+            step_entity(item, steps, shared, caches, &commands);
+        }
+    }
     // Springs that may skip frames while nobody sees them (`ViewVisibility` lags a frame).
     #[cfg(feature = "visibility")]
     for (entity, mut spring, mut component, visibility) in &mut catching_up {
@@ -104,6 +109,74 @@ pub(crate) fn step_springs<P: SpringProperty>(
         }
     }
     table.finish(count);
+}
+
+/// One awake, visible spring's frame: the usual step inlined, the unusual one out of line;
+/// writes the property if it moved, and puts the spring to sleep if it settled.
+#[expect(
+    clippy::inline_always,
+    reason = "the per-entity loop's body: a call per entity spills the `Mut` wrappers"
+)]
+#[inline(always)]
+fn step_entity<P: SpringProperty>(
+    (entity, spring, mut component): (Entity, Mut<PropertySpring<P>>, Mut<P::Component>),
+    steps: FrameSteps,
+    table: &TransitionTable,
+    caches: &Parallel<TransitionCache>,
+    commands: &ParallelCommands,
+) {
+    // Changed since this system last ran: by something else than this system, which marks
+    // every spring it steps (a retarget, a kick, an edit through reflection).
+    let untouched = !spring.is_changed();
+    // The spring changes every frame it is stepped; the property only when it moves.
+    let spring = spring.into_inner();
+    let current = P::get(&component);
+    match spring.step_usual(current, steps, false, untouched, table) {
+        UsualStep::Moved(value) => P::set(&mut component, value),
+        UsualStep::Still => {}
+        UsualStep::Declined => {
+            // Out of line, on the component without its wrapper: the loop keeps the `Mut` in
+            // registers.
+            if step_entity_unusual(
+                entity,
+                spring,
+                component.bypass_change_detection(),
+                (steps, table, caches),
+                commands,
+            ) {
+                component.set_changed();
+            }
+        }
+    }
+}
+
+/// [`step_entity`] when the usual step declined: the general step, with a transition from this
+/// thread's cache, its write and its settling. Whether it wrote the property.
+#[cold]
+#[inline(never)]
+fn step_entity_unusual<P: SpringProperty>(
+    entity: Entity,
+    spring: &mut PropertySpring<P>,
+    component: &mut P::Component,
+    (steps, table, caches): (FrameSteps, &TransitionTable, &Parallel<TransitionCache>),
+    commands: &ParallelCommands,
+) -> bool {
+    // Read again rather than passed: as an argument, the value would leave the vector
+    // registers on the usual path too.
+    let current = P::get(component);
+    let frame = spring.step_unusual(
+        current,
+        steps,
+        false,
+        (table, &mut caches.borrow_local_mut()),
+    );
+    if frame.outcome == Stepped::Settled {
+        put_to_sleep::<P>(commands, entity);
+    }
+    frame.write.is_some_and(|value| {
+        P::set(component, value);
+        true
+    })
 }
 
 /// Marks a spring that settled as asleep and triggers [`SpringSettled<P>`]; out of line, so

@@ -29,6 +29,17 @@ pub(crate) struct Frame<V> {
     pub(crate) write: Option<V>,
 }
 
+/// What the usual step did to a spring.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum UsualStep<V> {
+    /// It moved, and keeps moving: the property's new value.
+    Moved(V),
+    /// It keeps moving, but the property holds the value it would write.
+    Still,
+    /// The step is not the usual one; nothing was changed.
+    Declined,
+}
+
 /// What one frame did to a spring.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Stepped {
@@ -104,12 +115,7 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// its last step, no moving target, no time pending) and finds its slot. Every other case,
     /// and any result that is not finite or at rest, goes out of line from the same, untouched
     /// state.
-    #[expect(
-        clippy::inline_always,
-        reason = "the per-entity loop's hot path: measured 60 instructions per spring cheaper \
-                  inlined into it than called"
-    )]
-    #[inline(always)]
+    #[inline]
     pub(crate) fn step(
         &mut self,
         current: ValueOf<P>,
@@ -118,6 +124,36 @@ impl<P: SpringProperty> PropertySpring<P> {
         untouched: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
+        match self.step_usual(current, steps, hidden, untouched, table) {
+            UsualStep::Moved(value) => Frame {
+                outcome: Stepped::Moving,
+                write: Some(value),
+            },
+            UsualStep::Still => Frame {
+                outcome: Stepped::Moving,
+                write: None,
+            },
+            UsualStep::Declined => self.step_unusual(current, steps, hidden, (table, cache)),
+        }
+    }
+
+    /// [`step`](Self::step)'s common case, which needs no transition of its own: the spring
+    /// keeps moving (and this is the value to write, if it changed), or the step is declined
+    /// (the state untouched) for [`step_unusual`](Self::step_unusual) to do.
+    #[expect(
+        clippy::inline_always,
+        reason = "the per-entity loop's hot path: measured 60 instructions per spring cheaper \
+                  inlined into it than called"
+    )]
+    #[inline(always)]
+    pub(crate) fn step_usual(
+        &mut self,
+        current: ValueOf<P>,
+        steps: FrameSteps,
+        hidden: bool,
+        untouched: bool,
+        table: &TransitionTable,
+    ) -> UsualStep<ValueOf<P>> {
         let clock = FrameSteps::index(self.clock);
         let dt = steps.of(clock);
         let slot = if untouched & !hidden & (self.motion.generation == table.generation()) {
@@ -146,12 +182,28 @@ impl<P: SpringProperty> PropertySpring<P> {
                 self.motion.offset = after;
                 self.velocity = velocity;
                 let value = P::Space::at_carried(target, after);
-                return Frame {
-                    outcome: Stepped::Moving,
-                    write: (!P::Space::same(value, current)).then_some(value),
+                return if P::Space::same(value, current) {
+                    UsualStep::Still
+                } else {
+                    UsualStep::Moved(value)
                 };
             }
         }
+        UsualStep::Declined
+    }
+
+    /// [`step`](Self::step) when [`step_usual`](Self::step_usual) declined: out of line, with
+    /// a transition computed (once per distinct spring and time step, in `cache`) when the
+    /// spring's slot does not serve.
+    #[inline(never)]
+    pub(crate) fn step_unusual(
+        &mut self,
+        current: ValueOf<P>,
+        steps: FrameSteps,
+        hidden: bool,
+        (table, cache): (&TransitionTable, &mut TransitionCache),
+    ) -> Frame<ValueOf<P>> {
+        let dt = steps.of(FrameSteps::index(self.clock));
         let frame = self.step_general(current, dt, hidden, (table, cache));
         self.motion.generation = TransitionTable::NO_GENERATION;
         frame
