@@ -2,13 +2,12 @@
 
 use bevy::ecs::system::ParallelCommands;
 use bevy::prelude::*;
-use bevy::tasks::ComputeTaskPool;
 use bevy::utils::Parallel;
 
 use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringAsleep, Stepped, UsualStep};
 use super::event::SpringSettled;
-use super::table::TransitionTable;
+use super::table::{TransitionTable, compute_threads};
 use crate::choreography::{SettleTracker, SpringGroup};
 use crate::clock::{FrameSteps, SpringTime};
 use crate::property::SpringProperty;
@@ -89,7 +88,7 @@ pub(crate) fn step_springs<P: SpringProperty>(
     // frames): only that path looks the cache up, so the usual step carries nothing from
     // entity to entity.
     let caches = &*caches;
-    if ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num()) > 1 {
+    if compute_threads() > 1 {
         springs.par_iter_mut().for_each(|item| {
             step_entity(item, steps, shared, caches, &commands);
         });

@@ -62,8 +62,10 @@ impl Anchor {
         reach: -1.0,
     };
 
-    /// The anchor of `transition` for a spring of `omega_squared` and damping rate `rate`.
-    fn new(dt: f32, transition: &Transition<f32>, omega_squared: f32, rate: f32) -> Self {
+    /// The anchor of `spring`'s `transition` over `dt`.
+    fn new(spring: &Spring<f32>, dt: f32, transition: &Transition<f32>) -> Self {
+        let mass = spring.mass();
+        let (omega_squared, rate) = (spring.stiffness() / mass, spring.damping() / mass);
         let [[_, f1], [_, g]] = transition.matrix();
         // ρ ≤ 2b + ω bounds the spectral radius of [[0, 1], [−ω², −2b]].
         let radius = rate + omega_squared.sqrt();
@@ -153,13 +155,7 @@ impl Slot {
         let transition = spring.transition(dt);
         let [[d00, d01], [d10, d11]] = transition.increment_matrix();
         self.increments = [d00, d01, d10, d11];
-        let mass = spring.mass();
-        self.anchor = Anchor::new(
-            dt,
-            &transition,
-            spring.stiffness() / mass,
-            spring.damping() / mass,
-        );
+        self.anchor = Anchor::new(&spring, dt, &transition);
     }
 }
 
@@ -186,6 +182,11 @@ pub(crate) struct TransitionTable {
     requests: Parallel<Vec<(Key, Spring<f32>)>>,
 }
 
+/// The threads of Bevy's compute pool (1 before it is made): whether work is worth splitting.
+pub(crate) fn compute_threads() -> usize {
+    ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num())
+}
+
 /// Slots per parallel task when preparing: enough work to outweigh handing it out.
 const PREPARE_CHUNK: usize = 4096;
 
@@ -210,8 +211,7 @@ impl TransitionTable {
                 slot.prepare(steps.of(slot.key.clock));
             }
         };
-        let threads = ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num());
-        if threads > 1 && self.slots.len() > PREPARE_CHUNK {
+        if compute_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
             let _done: Vec<()> =
                 self.slots
                     .par_chunk_map_mut(ComputeTaskPool::get(), PREPARE_CHUNK, |_, slots| {
@@ -298,6 +298,7 @@ impl TransitionTable {
 #[cfg(test)]
 mod tests {
     use super::Anchor;
+    use crate::spring::tests::widened;
     use sprung::Spring;
 
     /// The worst error of an extended increment matrix against the exact one (computed in
@@ -310,17 +311,10 @@ mod tests {
         for omega in [0.1_f32, 1.0, 8.0, 40.0, 300.0, 2000.0] {
             for zeta in [0.02_f32, 0.3, 1.0, 1.0001, 4.0, 60.0] {
                 let spring = Spring::from_natural_frequency(omega, zeta).unwrap();
-                let exact = Spring::<f64>::new(
-                    f64::from(spring.mass()),
-                    f64::from(spring.stiffness()),
-                    f64::from(spring.damping()),
-                )
-                .unwrap();
-                let mass = spring.mass();
-                let (w2, rate) = (spring.stiffness() / mass, spring.damping() / mass);
+                let exact = widened(&spring);
                 for fps in [30.0_f32, 60.0, 144.0, 360.0] {
                     let dt = 1.0 / fps;
-                    let anchor = Anchor::new(dt, &spring.transition(dt), w2, rate);
+                    let anchor = Anchor::new(&spring, dt, &spring.transition(dt));
                     assert!(anchor.reach > 0.0);
                     for fraction in [-0.99_f32, -0.5, -0.01, 0.01, 0.5, 0.99] {
                         let step = dt + fraction * anchor.reach;
@@ -352,7 +346,7 @@ mod tests {
     fn nothing_is_extended_out_of_reach() {
         let spring = Spring::from_natural_frequency(10.0, 0.5).unwrap();
         let dt = 1.0 / 60.0;
-        let anchor = Anchor::new(dt, &spring.transition(dt), 100.0, 10.0);
+        let anchor = Anchor::new(&spring, dt, &spring.transition(dt));
         assert!(anchor.increments(dt + 1.01 * anchor.reach).is_none());
         assert!(anchor.increments(dt - 1.01 * anchor.reach).is_none());
         assert!(anchor.increments(f32::NAN).is_none());

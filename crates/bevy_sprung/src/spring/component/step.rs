@@ -203,7 +203,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         hidden: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        let dt = steps.of(FrameSteps::index(self.clock));
+        let dt = steps.dt(self.clock);
         let frame = self.step_general(current, dt, hidden, (table, cache));
         self.motion.generation = TransitionTable::NO_GENERATION;
         frame
@@ -221,7 +221,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         preference: ReducedMotion,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        let dt = steps.of(FrameSteps::index(self.clock));
+        let dt = steps.dt(self.clock);
         self.motion.generation = TransitionTable::NO_GENERATION;
         if preference == ReducedMotion::Snap {
             self.repair(current, table);
