@@ -10,6 +10,11 @@
 //! analytic straight through critical damping. The regimes below only change how these are
 //! evaluated so that no step cancels, overflows or divides by zero; each formula says which.
 //!
+//! A short step (`ρt ≤ 1`, a frame of any brisk spring) rounded to `f32` needs none of them:
+//! its coefficients are sums of one Taylor series in `t` whose terms never cancel, and no
+//! `exp`, `sin` or `cos` is called (see [`short_step`]). `f64` results keep the closed forms,
+//! whose rounding is a few `f64` units smaller.
+//!
 //! The evaluation is in `f64` for `f32` springs too, from their exact `f32` parameters, and is
 //! rounded to `f32` once: in pure `f32` the rounding of `ω²` alone moves the phase of a long
 //! step by `u·ωt` (two radians at `ωt = 3e7`), which an `f64` evaluation avoids for the cost of
@@ -52,6 +57,34 @@ const SERIES_INTEGRAL: [f64; 25] = {
     }
     table
 };
+
+/// Reciprocals `1/m`, `m = 1, 2, …`: the a-priori bound `(ρt)ᵐ/m!` of the series' remaining
+/// terms, advanced by a product instead of a division.
+const RECIPROCALS: [f64; TIME_SERIES_TERMS] = {
+    let mut table = [0.0; TIME_SERIES_TERMS];
+    let mut m = 1;
+    while m <= TIME_SERIES_TERMS {
+        table[m - 1] = 1.0 / (m as f64);
+        m += 1;
+    }
+    table
+};
+
+/// Squared reciprocals `1/m²`, `m = 1, 2, …`: the same bound, squared.
+const SQUARED_RECIPROCALS: [f64; TIME_SERIES_TERMS] = {
+    let mut table = [0.0; TIME_SERIES_TERMS];
+    let mut m = 1;
+    while m <= TIME_SERIES_TERMS {
+        table[m - 1] = 1.0 / ((m * m) as f64);
+        m += 1;
+    }
+    table
+};
+
+/// A result tolerance from which on short steps are evaluated by [`short_step`] alone: that of
+/// `f32` (`2⁻²⁴`) and coarser. The series rounds a few units of `f64` roundoff more than the
+/// closed forms, invisible once rounded to `f32` but not in an `f64` result, which keeps them.
+const SHORT_STEP_TOLERANCE: f64 = 1e-10;
 
 /// `1/(2n)!` and `1/(2n+1)!` for `n = 1..=4`: the band series without their leading 1.
 const COSH_SERIES: [f64; 4] = [1.0 / 2.0, 1.0 / 24.0, 1.0 / 720.0, 1.0 / 40_320.0];
@@ -173,7 +206,7 @@ fn time_series_g0(b: f64, w2: f64, t: f64, rho_t: f64, tolerance: f64) -> f64 {
     let mut remaining = 1.0;
     let small_enough = tolerance / 16.0;
     for m in 1..TIME_SERIES_TERMS {
-        remaining *= rho_t / (m as f64);
+        remaining *= rho_t * RECIPROCALS[m - 1];
         if remaining < small_enough {
             break;
         }
@@ -185,10 +218,114 @@ fn time_series_g0(b: f64, w2: f64, t: f64, rho_t: f64, tolerance: f64) -> f64 {
     sum * t
 }
 
-/// The transition coefficients for half-rate `b = c/(2m) ≥ 0`, `ω² = k/m ≥ 0`, `ω = √ω²` and
-/// step `t ≥ 0`, all finite. `tolerance` is the unit roundoff of the type the result is rounded
-/// to: series whose truncation could not show in it stop early.
-pub(crate) fn coefficients(b: f64, w2: f64, w: f64, t: f64, tolerance: f64) -> Coefficients {
+/// `1/n!` for `n = 0, 1, …`: the weights of [`short_step`]'s terms.
+const INVERSE_FACTORIALS: [f64; TIME_SERIES_TERMS + 2] = {
+    let mut table = [1.0; TIME_SERIES_TERMS + 2];
+    let mut factorial = 1.0;
+    let mut n = 1;
+    while n < table.len() {
+        factorial *= n as f64;
+        table[n] = 1.0 / factorial;
+        n += 1;
+    }
+    table
+};
+
+/// `1/7!²`: [`short_step`] always sums the series to `l₇`, and the squared bound on the terms it
+/// leaves out is then `(ρt)¹⁴/7!²`.
+const FIXED_BOUND_SQUARED: f64 = 1.0 / (5040.0 * 5040.0);
+
+/// Every coefficient of a short step from the Taylor series of `f1` in `t` that
+/// [`time_series_g0`] sums, to relative precision `tolerance`: no `exp`, `sin`, `cos` or
+/// square root. `rho_t_squared` bounds `(ρt)²` and is at most 1.
+///
+/// In the scaled terms `lₘ = m!·uₘ/t` (the Lucas sequence of the two roots, times `tᵐ⁻¹`) the
+/// recurrence has constant coefficients, `lₘ₊₁ = β·lₘ + γ·lₘ₋₁` with `β = −2bt`, `γ = −ω²t²`,
+/// `l₀ = 0`, `l₁ = 1`, and so has its square, `lₘ₊₂ = (β² + γ)·lₘ + βγ·lₘ₋₁`: the terms to `l₇`
+/// (enough whenever `(ρt)⁷/7! ≤ tolerance/16`, i.e. `ρt ≲ 0.21` in `f32`: a 60 fps frame of a
+/// spring with `ω ≤ 12`, or `ω ≤ 30` at 144 Hz) take three products and sums in a row, not six,
+/// and no test per term. Past `l₇` the terms come one by one while the a-priori bound on what is
+/// left is not yet below `tolerance/16` of the first. (`β² + γ` may cancel; its error is
+/// absolute, a few `f64` roundoffs of terms bounded by the first, like every rounding here.)
+///
+/// `f1 = t·Σ lₘ/m!` and `g0 = t²·Σ lₘ/(m+1)!` are sums whose terms are bounded by the first, as
+/// in `time_series_g0`, and `f1 ≥ e^{−ρt}·t ≥ t/e`, so neither cancels. The rest follow without
+/// a subtraction that could: `ω²·g0 = 1 − f0` is a product, `f0 = 1 − ω²·g0` lies in
+/// `[1 − (ρt)²/2, 1]`, and `g = 1 − (ω²·g0 + 2b·f1)` (the derivative of `f1`) subtracts two
+/// positive terms, so its error is absolute, `~u` of `f64`, as in the closed forms (where `g`
+/// cancels too). All of it is far below the `f32` rounding the result then takes.
+#[inline]
+fn short_step(b: f64, w2: f64, t: f64, rho_t_squared: f64, tolerance: f64) -> Coefficients {
+    let two_b = b + b;
+    let beta = 0.0 - two_b * t;
+    let gamma = 0.0 - w2 * t * t;
+    let (square_last, square_before) = (beta * beta + gamma, beta * gamma);
+    let [l2, l3] = [beta, square_last];
+    let l4 = beta * l3 + gamma * l2;
+    let l5 = square_last * l3 + square_before * l2;
+    let l6 = square_last * l4 + square_before * l3;
+    let l7 = square_last * l5 + square_before * l4;
+    let weigh = |shift: usize| {
+        let weight = |m: usize| INVERSE_FACTORIALS[m + shift];
+        (weight(1) + l2 * weight(2) + l3 * weight(3))
+            + (l4 * weight(4) + l5 * weight(5))
+            + (l6 * weight(6) + l7 * weight(7))
+    };
+    let (mut f1_sum, mut g0_sum) = (weigh(0), weigh(1));
+    // (ρt)⁷/7!, squared so that `ρt` needs no square root.
+    let small_enough = tolerance / 16.0;
+    let small_enough_squared = small_enough * small_enough;
+    let rho_t_4 = rho_t_squared * rho_t_squared;
+    let mut remaining_squared = rho_t_4 * rho_t_4 * rho_t_4 * rho_t_squared * FIXED_BOUND_SQUARED;
+    let (mut before, mut last) = (l6, l7);
+    // To `l₂₀`, the last term `time_series_g0` may take too (its weights reach `1/21!`).
+    for m in 8..INVERSE_FACTORIALS.len() - 1 {
+        if remaining_squared < small_enough_squared {
+            break;
+        }
+        (before, last) = (last, beta * last + gamma * before);
+        f1_sum += last * INVERSE_FACTORIALS[m];
+        g0_sum += last * INVERSE_FACTORIALS[m + 1];
+        remaining_squared *= rho_t_squared * SQUARED_RECIPROCALS[m - 1];
+    }
+    let f1 = f1_sum * t;
+    let g0 = g0_sum * t * t;
+    let w2g0 = w2 * g0;
+    Coefficients {
+        f0: 1.0 - w2g0,
+        f1,
+        w2f1: w2 * f1,
+        g: 1.0 - (w2g0 + two_b * f1),
+        w2g0,
+        g0,
+    }
+}
+
+/// The transition coefficients for half-rate `b = c/(2m) ≥ 0`, `ω² = k/m ≥ 0` and step
+/// `t ≥ 0`, all finite. `tolerance` is the unit roundoff of the type the result is rounded to:
+/// series whose truncation could not show in it stop early.
+#[inline]
+pub(crate) fn coefficients(b: f64, w2: f64, t: f64, tolerance: f64) -> Coefficients {
+    // (ρt)², squared to need no root: the spectral radius ρ is ω up to critical damping and
+    // b + √(b² − ω²) ≤ 2b beyond it.
+    let two_bt = (b + b) * t;
+    let rho_t_squared = if b * b <= w2 {
+        w2 * t * t
+    } else {
+        two_bt * two_bt
+    };
+    if tolerance >= SHORT_STEP_TOLERANCE && rho_t_squared <= 1.0 {
+        short_step(b, w2, t, rho_t_squared, tolerance)
+    } else {
+        long_step(b, w2, t, tolerance)
+    }
+}
+
+/// [`coefficients`] by the closed form of the regime: out of line, so that the short path
+/// inlines into its caller without the long one's frame.
+#[inline(never)]
+fn long_step(b: f64, w2: f64, t: f64, tolerance: f64) -> Coefficients {
+    let w = sqrt(w2);
     // z = (b − ω)t·(b + ω)t: never forms b² (which overflows long before b does). An exact zero
     // difference is caught first so that 0·∞ cannot arise when (b + ω)t overflows.
     let difference_t = (b - w).abs() * t;
@@ -338,5 +475,72 @@ fn finish(
         g,
         w2g0,
         g0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+
+    use super::{Coefficients, long_step, short_step};
+    use std::println;
+
+    /// `f32`'s unit roundoff, the tolerance the short path serves.
+    const F32_ROUNDOFF: f64 = f32::EPSILON as f64 / 2.0;
+
+    /// The short path against the closed forms over its whole domain, `ρt ≤ 1`, on both sides
+    /// of critical damping: within a quarter of `f32`'s unit roundoff, relative for the entries
+    /// that keep their relative precision and absolute for `f0` and `g` (which may cross zero).
+    /// A term dropped from the fixed part alone errs by `(ρt)⁷/7!`, ~400 times more at `ρt = 1`.
+    #[test]
+    fn the_short_step_agrees_with_the_closed_forms() {
+        let mut worst = 0.0_f64;
+        for zeta in [0.0, 0.05, 0.3, 0.5, 0.7, 0.99, 1.0, 1.01, 1.5, 3.0, 20.0] {
+            for rho_t in [1e-6, 0.01, 0.1, 0.2, 0.21, 0.22, 0.35, 0.5, 0.75, 0.9, 1.0] {
+                for w in [0.5, 10.0, 4000.0] {
+                    let b = zeta * w;
+                    let (w2, two_b) = (w * w, b + b);
+                    let rho = if b <= w { w } else { two_b };
+                    let t = rho_t / rho;
+                    let short = short_step(b, w2, t, (rho * t) * (rho * t), F32_ROUNDOFF);
+                    let closed = long_step(b, w2, t, 1e-17);
+                    let relative = |x: f64, y: f64| ((x - y) / y).abs();
+                    let errors = [
+                        relative(short.f1, closed.f1),
+                        relative(short.w2f1, closed.w2f1),
+                        relative(short.g0, closed.g0),
+                        relative(short.w2g0, closed.w2g0),
+                        (short.f0 - closed.f0).abs(),
+                        (short.g - closed.g).abs(),
+                    ];
+                    let error = errors.into_iter().fold(0.0, f64::max);
+                    assert!(
+                        error <= F32_ROUNDOFF / 4.0,
+                        "ζ = {zeta}, ρt = {rho_t}, ω = {w}: {short:?} vs {closed:?}"
+                    );
+                    worst = worst.max(error);
+                }
+            }
+        }
+        println!("worst: {:.3} u of f32", worst / F32_ROUNDOFF);
+    }
+
+    /// A free body's step is exact: `f1 = t`, `g0 = t²/2`, `f0 = g = 1`.
+    #[test]
+    #[expect(clippy::float_cmp, reason = "the free step is exact, bit for bit")]
+    fn a_free_short_step_is_exact() {
+        let t = 0.75;
+        let Coefficients {
+            f0,
+            f1,
+            w2f1,
+            g,
+            w2g0,
+            g0,
+        } = short_step(0.0, 0.0, t, 0.0, F32_ROUNDOFF);
+        assert_eq!(
+            [f0, f1, w2f1, g, w2g0, g0],
+            [1.0, t, 0.0, 1.0, 0.0, t * t / 2.0]
+        );
     }
 }

@@ -162,13 +162,7 @@ impl<T: Scalar> Spring<T> {
             self.damping.to_f64(),
         );
         let omega_squared = k / m;
-        kernel::coefficients(
-            c / m / 2.0,
-            omega_squared,
-            crate::math::sqrt(omega_squared),
-            t,
-            T::UNIT_ROUNDOFF.to_f64(),
-        )
+        kernel::coefficients(c / m / 2.0, omega_squared, t, T::UNIT_ROUNDOFF.to_f64())
     }
 
     /// Critically damped, unit mass, natural frequency `omega` (validated by the caller).
