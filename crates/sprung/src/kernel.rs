@@ -105,6 +105,8 @@ pub(crate) struct Coefficients {
     pub w2g0: f64,
     /// `g0 = ∫₀ᵗ f1`: the response of `x` to a unit constant acceleration.
     pub g0: f64,
+    /// `2b = c/m`.
+    pub rate: f64,
 }
 
 /// The factor `e^{−y}`, `y ≥ 0`, that every entry of one regime shares, applied so that an
@@ -298,6 +300,7 @@ fn short_step(b: f64, w2: f64, t: f64, rho_t_squared: f64, tolerance: f64) -> Co
         g: 1.0 - (w2g0 + two_b * f1),
         w2g0,
         g0,
+        rate: two_b,
     }
 }
 
@@ -475,6 +478,7 @@ fn finish(
         g,
         w2g0,
         g0,
+        rate: b + b,
     }
 }
 
@@ -537,10 +541,11 @@ mod tests {
             g,
             w2g0,
             g0,
+            rate,
         } = short_step(0.0, 0.0, t, 0.0, F32_ROUNDOFF);
         assert_eq!(
-            [f0, f1, w2f1, g, w2g0, g0],
-            [1.0, t, 0.0, 1.0, 0.0, t * t / 2.0]
+            [f0, f1, w2f1, g, w2g0, g0, rate],
+            [1.0, t, 0.0, 1.0, 0.0, t * t / 2.0, 0.0]
         );
     }
 }

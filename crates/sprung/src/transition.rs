@@ -201,20 +201,21 @@ pub struct Transition<T = f32> {
 }
 
 impl<T: Scalar> Transition<T> {
-    /// Rounds the `f64` coefficients to `T` once. `rate = c/m`.
-    pub(crate) fn from_coefficients(dt: T, rate: T, c: &Coefficients) -> Self {
-        let rate_f64 = rate.to_f64();
+    /// Rounds the `f64` coefficients to `T` once.
+    pub(crate) fn from_coefficients(dt: T, c: &Coefficients) -> Self {
         Self {
             // `0 − x` rather than `−x`: a free spring's entries are +0, not −0.
             d00: T::from_f64(0.0 - c.w2g0),
             f1: T::from_f64(c.f1),
             w2f1: T::from_f64(c.w2f1),
             // Both terms are ≥ 0: no cancellation.
-            d11: T::from_f64(0.0 - (c.w2g0 + rate_f64 * c.f1)),
+            d11: T::from_f64(0.0 - (c.w2g0 + c.rate * c.f1)),
             f0: T::from_f64(c.f0),
             g: T::from_f64(c.g),
             g0: T::from_f64(c.g0),
-            rate,
+            // `c/m` in `f64` rounded to `f32` is the `f32` quotient (53 ≥ 2·24 + 2 bits: the
+            // double rounding is innocuous), but for one beyond `f32::MAX`, which saturates.
+            rate: T::from_f64(c.rate),
             dt,
         }
     }

@@ -250,11 +250,7 @@ impl<T: Scalar> Spring<T> {
         } else {
             T::zero()
         };
-        Transition::from_coefficients(
-            dt,
-            self.damping / self.mass,
-            &self.coefficients(dt.to_f64()),
-        )
+        Transition::from_coefficients(dt, &self.coefficients(dt.to_f64()))
     }
 
     /// The exact transition over `dt` seconds, refusing an invalid `dt`.
