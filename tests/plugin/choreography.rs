@@ -7,7 +7,9 @@ use bevy::prelude::*;
 use bevy_sprung::choreography::SequencePhase;
 use bevy_sprung::prelude::*;
 
-use crate::harness::{app, elapsed, run, targets_visited, translation, translation_spring};
+use crate::harness::{
+    app, elapsed, run, targets_visited, translation, translation_spring, widened,
+};
 
 /// What happened, in order: `(seconds, what)`.
 #[derive(Resource, Clone, Default)]
@@ -477,12 +479,7 @@ fn a_spring_curve_is_the_closed_form() {
     use bevy_sprung::curve::{SpringCurve, SpringEasing};
 
     let spring = Spring::from_natural_frequency(7.0, 0.3).unwrap();
-    let exact = sprung::Spring::<f64>::new(
-        f64::from(spring.mass()),
-        f64::from(spring.stiffness()),
-        f64::from(spring.damping()),
-    )
-    .unwrap();
+    let exact = widened(&spring);
     let (start, target, velocity) = (
         Vec3::new(3.0, -2.0, 1.0),
         Vec3::new(-5.0, 8.0, 0.5),

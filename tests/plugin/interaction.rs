@@ -18,7 +18,7 @@ use bevy_sprung::transform::Scale;
 use bevy_sprung::ui::UiTranslationSpring;
 use sprung::SpringState;
 
-use crate::harness::{app, run};
+use crate::harness::{app, run, widened};
 
 fn location(position: Vec2) -> Location {
     Location {
@@ -245,14 +245,7 @@ fn state_changes_keep_the_velocity() {
     release(&mut app, button);
     run(&mut app, 1);
     let after = app.world().get::<Transform>(button).unwrap().scale.x;
-    let exact = sprung::Spring::<f64>::new(
-        f64::from(spring.spring().mass()),
-        f64::from(spring.spring().stiffness()),
-        f64::from(spring.spring().damping()),
-    )
-    .unwrap()
-    .transition(1.0 / 60.0)
-    .step(
+    let exact = widened(spring.spring()).transition(1.0 / 60.0).step(
         SpringState::new(f64::from(x), f64::from(v)),
         f64::from(HOVERED.x),
     );
