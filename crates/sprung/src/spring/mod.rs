@@ -234,6 +234,11 @@ impl<T: Scalar> Spring<T> {
     /// A negative, NaN or infinite `dt` gives the identity (nothing moves): use
     /// [`try_transition`](Self::try_transition) to have it refused instead.
     ///
+    /// Compute it once per spring and `dt` and share it: for an `f32` spring over a frame
+    /// (`ρ·dt ≤ 1`, with `ρ` the faster decay rate or the natural frequency) it is a short
+    /// Taylor series, about 20 ns; longer steps, heavy damping and `f64` springs take the closed
+    /// forms (`exp`, `sin`, `cos` in `f64`), 40–140 ns.
+    ///
     /// # Example
     /// ```
     /// use sprung::Spring;
