@@ -7,9 +7,7 @@ use bevy::prelude::*;
 use bevy_sprung::choreography::SequencePhase;
 use bevy_sprung::prelude::*;
 
-use crate::harness::{
-    app, elapsed, run, targets_visited, translation, translation_spring, widened,
-};
+use crate::harness::{app, elapsed, run, targets_visited, translation, translation_spring};
 
 /// What happened, in order: `(seconds, what)`.
 #[derive(Resource, Clone, Default)]
@@ -479,7 +477,7 @@ fn a_spring_curve_is_the_closed_form() {
     use bevy_sprung::curve::{SpringCurve, SpringEasing};
 
     let spring = Spring::from_natural_frequency(7.0, 0.3).unwrap();
-    let exact = widened(&spring);
+    let exact = sprung::Spring::<f64>::from(spring);
     let (start, target, velocity) = (
         Vec3::new(3.0, -2.0, 1.0),
         Vec3::new(-5.0, 8.0, 0.5),

@@ -77,21 +77,10 @@ pub(crate) fn elapsed(app: &App) -> f64 {
     app.world().resource::<Time<Virtual>>().elapsed_secs_f64()
 }
 
-/// The same spring in `f64` (its `f32` parameters are exact there): the reference the
-/// plugin's `f32` steps are measured against.
-pub(crate) fn widened(spring: &Spring) -> sprung::Spring<f64> {
-    sprung::Spring::<f64>::new(
-        f64::from(spring.mass()),
-        f64::from(spring.stiffness()),
-        f64::from(spring.damping()),
-    )
-    .unwrap()
-}
-
 /// The exact state, in `f64`, of a 1D spring released at rest at `from` toward `to` after
 /// `seconds`: what every frame rate must reproduce.
 pub(crate) fn exact(spring: &Spring, from: f32, to: f32, seconds: f64) -> SpringState<f64> {
-    widened(spring)
+    sprung::Spring::<f64>::from(*spring)
         .transition(seconds)
         .step(SpringState::new(f64::from(from), 0.0), f64::from(to))
 }

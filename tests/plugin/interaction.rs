@@ -18,7 +18,7 @@ use bevy_sprung::transform::Scale;
 use bevy_sprung::ui::UiTranslationSpring;
 use sprung::SpringState;
 
-use crate::harness::{app, run, widened};
+use crate::harness::{app, run};
 
 fn location(position: Vec2) -> Location {
     Location {
@@ -245,10 +245,12 @@ fn state_changes_keep_the_velocity() {
     release(&mut app, button);
     run(&mut app, 1);
     let after = app.world().get::<Transform>(button).unwrap().scale.x;
-    let exact = widened(spring.spring()).transition(1.0 / 60.0).step(
-        SpringState::new(f64::from(x), f64::from(v)),
-        f64::from(HOVERED.x),
-    );
+    let exact = sprung::Spring::<f64>::from(*spring.spring())
+        .transition(1.0 / 60.0)
+        .step(
+            SpringState::new(f64::from(x), f64::from(v)),
+            f64::from(HOVERED.x),
+        );
     assert!(
         (f64::from(after) - exact.position).abs() < 1e-5,
         "{after} vs {}",

@@ -433,12 +433,7 @@ fn impulse_peak_is_the_maximum_of_the_impulse_response() {
     );
     // f32 springs: the same peak, rounded once.
     let spring = Spring::<f32>::bouncy();
-    let wide = Spring::<f64>::new(
-        f64::from(spring.mass()),
-        f64::from(spring.stiffness()),
-        f64::from(spring.damping()),
-    )
-    .unwrap();
+    let wide = Spring::<f64>::from(spring);
     assert_eq!(
         spring.impulse_peak().unwrap(),
         wide.impulse_peak().unwrap() as f32

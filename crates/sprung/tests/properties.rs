@@ -447,12 +447,7 @@ proptest! {
 /// `(crate's step, increment added to the position without a remainder, plain matrix)`.
 fn drift_over_a_minute(omega: f32) -> (f64, f64, f64) {
     let spring32 = Spring::<f32>::from_natural_frequency(omega, 0.0).unwrap();
-    let spring64 = Spring::<f64>::new(
-        f64::from(spring32.mass()),
-        f64::from(spring32.stiffness()),
-        f64::from(spring32.damping()),
-    )
-    .unwrap();
+    let spring64 = Spring::<f64>::from(spring32);
     let dt = 1.0_f32 / 240.0;
     let (step32, step64) = (spring32.transition(dt), spring64.transition(f64::from(dt)));
     let [[f0, f1], [m10, g]] = step32.matrix();

@@ -53,12 +53,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
         let zeta = narrow(10f64.powf(-1.3 + 3.0 * random.unit()));
         let scale = 10f64.powf(-3.0 + 9.0 * random.unit());
         let spring = Spring::<f32>::from_natural_frequency(omega, zeta).unwrap();
-        let shadow_spring = Spring::<f64>::new(
-            f64::from(spring.mass()),
-            f64::from(spring.stiffness()),
-            f64::from(spring.damping()),
-        )
-        .unwrap();
+        let shadow_spring = Spring::<f64>::from(spring);
         let mut state = SpringState::at_rest(narrow(scale * random.unit()));
         let mut shadow = SpringState::at_rest(f64::from(state.position));
         let mut target = state.position;

@@ -48,16 +48,6 @@ fn damped_spring() -> impl Strategy<Value = Spring> {
     })
 }
 
-/// `spring` in `f64`: the exact reference for its `f32` steps.
-pub(super) fn widened(spring: &Spring) -> Spring<f64> {
-    Spring::new(
-        f64::from(spring.mass()),
-        f64::from(spring.stiffness()),
-        f64::from(spring.damping()),
-    )
-    .unwrap()
-}
-
 /// The tolerance at `magnitude`: a thousandth of a unit or four times the spacing of `f32`
 /// there, whichever is coarser, with the speed of equal energy.
 fn rest_for(spring: &Spring, magnitude: f32) -> RestThreshold {
@@ -206,7 +196,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
         let zeta = narrow(10f64.powf(-1.3 + 3.0 * random.unit()));
         let scale = 10f64.powf(-2.0 + 8.0 * random.unit());
         let parameters = Spring::from_natural_frequency(omega, zeta).unwrap();
-        let exact = widened(&parameters);
+        let exact = Spring::<f64>::from(parameters);
         let mut transform = Transform::default();
         let mut spring = TranslationSpring::new(parameters, Vec3::ZERO);
         let mut shadow = [SpringState::at_rest(0.0_f64); 3];

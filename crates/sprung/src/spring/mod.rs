@@ -82,6 +82,26 @@ impl<T: Scalar> Default for Spring<T> {
     }
 }
 
+impl From<Spring<f32>> for Spring<f64> {
+    /// The same spring in `f64`: every `f32` is exact there, so it is valid as the original
+    /// was, with the same motion; what an `f32` spring's steps are measured against.
+    ///
+    /// # Example
+    /// ```
+    /// use sprung::Spring;
+    /// let wide = Spring::<f64>::from(Spring::<f32>::snappy());
+    /// assert_eq!(wide.stiffness(), f64::from(Spring::<f32>::snappy().stiffness()));
+    /// ```
+    #[inline]
+    fn from(spring: Spring<f32>) -> Self {
+        Self {
+            mass: f64::from(spring.mass),
+            stiffness: f64::from(spring.stiffness),
+            damping: f64::from(spring.damping),
+        }
+    }
+}
+
 #[inline]
 fn finite<T: Scalar>(value: T, parameter: Parameter) -> Result<T, SpringError> {
     if value.is_finite() {
