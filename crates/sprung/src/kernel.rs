@@ -58,28 +58,23 @@ const SERIES_INTEGRAL: [f64; 25] = {
     table
 };
 
-/// Reciprocals `1/m`, `m = 1, 2, …`: the a-priori bound `(ρt)ᵐ/m!` of the series' remaining
-/// terms, advanced by a product instead of a division.
-const RECIPROCALS: [f64; TIME_SERIES_TERMS] = {
-    let mut table = [0.0; TIME_SERIES_TERMS];
+/// `1/mᵖ` for `m = 1, 2, …, N`.
+const fn reciprocal_powers<const N: usize>(power: u32) -> [f64; N] {
+    let mut table = [0.0; N];
     let mut m = 1;
-    while m <= TIME_SERIES_TERMS {
-        table[m - 1] = 1.0 / (m as f64);
+    while m <= N {
+        table[m - 1] = 1.0 / (m.pow(power) as f64);
         m += 1;
     }
     table
-};
+}
 
-/// Squared reciprocals `1/m²`, `m = 1, 2, …`: the same bound, squared.
-const SQUARED_RECIPROCALS: [f64; TIME_SERIES_TERMS] = {
-    let mut table = [0.0; TIME_SERIES_TERMS];
-    let mut m = 1;
-    while m <= TIME_SERIES_TERMS {
-        table[m - 1] = 1.0 / ((m * m) as f64);
-        m += 1;
-    }
-    table
-};
+/// Reciprocals `1/m`: the a-priori bound `(ρt)ᵐ/m!` of the series' remaining terms, advanced by
+/// a product instead of a division.
+const RECIPROCALS: [f64; TIME_SERIES_TERMS] = reciprocal_powers(1);
+
+/// Squared reciprocals `1/m²`: the same bound, squared.
+const SQUARED_RECIPROCALS: [f64; TIME_SERIES_TERMS] = reciprocal_powers(2);
 
 /// A result tolerance from which on short steps are evaluated by [`short_step`] alone: that of
 /// `f32` (`2⁻²⁴`) and coarser. The series rounds a few units of `f64` roundoff more than the
