@@ -1,5 +1,6 @@
 //! The systems that step springs, put them to sleep and wake them.
 
+use bevy::ecs::change_detection::{ContiguousComponentTicksMut, ContiguousMut, MaybeLocation};
 use bevy::ecs::system::ParallelCommands;
 use bevy::prelude::*;
 use bevy::utils::Parallel;
@@ -92,8 +93,16 @@ pub(crate) fn step_springs<P: SpringProperty>(
         springs.par_iter_mut().for_each(|item| {
             step_entity(item, steps, shared, caches, &commands);
         });
+    } else if let Ok(tables) = springs.contiguous_iter_mut() {
+        // One thread (Bevy's default on two cores): each table's columns as slices, the step
+        // inlined into a plain loop over them, change ticks read and written directly.
+        for (entities, springs, components) in tables {
+            step_table(
+                entities, springs, components, steps, shared, caches, &commands,
+            );
+        }
     } else {
-        // One thread (Bevy's default on two cores): a plain loop, the step inlined into it.
+        // A property on a sparse-set component: entity by entity.
         for item in &mut springs {
             step_entity(item, steps, shared, caches, &commands);
         }
@@ -147,6 +156,83 @@ fn step_entity<P: SpringProperty>(
             }
         }
     }
+}
+
+/// The awake, visible springs of one table, from its columns: [`step_entity`] for each, without
+/// the per-entity `Mut` wrappers. Every spring is marked changed (it was stepped), a property
+/// only where it moved.
+#[inline(never)]
+fn step_table<P: SpringProperty>(
+    entities: &[Entity],
+    springs: ContiguousMut<PropertySpring<P>>,
+    components: ContiguousMut<P::Component>,
+    steps: FrameSteps,
+    table: &TransitionTable,
+    caches: &Parallel<TransitionCache>,
+    commands: &ParallelCommands,
+) {
+    let (springs, mut spring_ticks) = ContiguousMut::bypass_change_detection_split(springs);
+    let (components, mut component_ticks) =
+        ContiguousMut::bypass_change_detection_split(components);
+    let (last_run, this_run) = (spring_ticks.last_run(), spring_ticks.this_run());
+    let rows = springs.iter_mut().zip(components.iter_mut()).zip(
+        spring_ticks
+            .changed()
+            .iter()
+            .zip(component_ticks.changed_mut()),
+    );
+    for (row, ((spring, component), (spring_changed, component_changed))) in rows.enumerate() {
+        // Changed since this system last ran: by something else than this system (see
+        // `step_entity`).
+        let untouched = !spring_changed.is_newer_than(last_run, this_run);
+        let current = P::get(component);
+        let moved = match spring.step_usual(current, steps, false, untouched, table) {
+            UsualStep::Moved(value) => {
+                P::set(component, value);
+                true
+            }
+            UsualStep::Still => false,
+            UsualStep::Declined => step_entity_unusual(
+                entities[row],
+                spring,
+                component,
+                (steps, table, caches),
+                commands,
+            ),
+        };
+        if moved {
+            *component_changed = this_run;
+        }
+    }
+    spring_ticks.mark_all_as_changed();
+    mark_changed_by(&mut component_ticks);
+}
+
+/// Where Bevy tracks change locations (feature `track_location`), records this system as what
+/// changed the rows it marked changed in this run (`this_run` is unique to it).
+#[cold]
+#[track_caller]
+fn mark_changed_by(ticks: &mut ContiguousComponentTicksMut) {
+    if ticks.changed_by().into_option().is_none() {
+        return;
+    }
+    let this_run = ticks.this_run();
+    let marked: Vec<bool> = ticks
+        .changed()
+        .iter()
+        .map(|tick| *tick == this_run)
+        .collect();
+    let caller = MaybeLocation::caller();
+    ticks
+        .changed_by_mut()
+        .zip(caller)
+        .map(|(changed_by, caller)| {
+            for (slot, marked) in changed_by.iter_mut().zip(marked) {
+                if marked {
+                    *slot = caller;
+                }
+            }
+        });
 }
 
 /// [`step_entity`] when the usual step declined: the general step, with a transition from this
