@@ -1,8 +1,10 @@
 //! The systems that step springs, put them to sleep and wake them.
 
+use bevy::ecs::change_detection::Tick;
 use bevy::ecs::change_detection::{ContiguousComponentTicksMut, ContiguousMut, MaybeLocation};
 use bevy::ecs::system::ParallelCommands;
 use bevy::prelude::*;
+use bevy::tasks::ComputeTaskPool;
 use bevy::utils::Parallel;
 
 use super::cache::TransitionCache;
@@ -89,20 +91,23 @@ pub(crate) fn step_springs<P: SpringProperty>(
     // frames): only that path looks the cache up, so the usual step carries nothing from
     // entity to entity.
     let caches = &*caches;
-    if compute_threads() > 1 {
+    let threads = compute_threads();
+    if let Ok(tables) = springs.contiguous_iter_mut() {
+        // Each table's columns as slices, the step inlined into a plain loop over them, change
+        // ticks read and written directly; on the compute pool's threads if it has several.
+        for (entities, springs, components) in tables {
+            step_table(
+                (entities, springs, components),
+                (steps, shared, caches, &commands),
+                threads,
+            );
+        }
+    } else if threads > 1 {
+        // A property on a sparse-set component: entity by entity.
         springs.par_iter_mut().for_each(|item| {
             step_entity(item, steps, shared, caches, &commands);
         });
-    } else if let Ok(tables) = springs.contiguous_iter_mut() {
-        // One thread (Bevy's default on two cores): each table's columns as slices, the step
-        // inlined into a plain loop over them, change ticks read and written directly.
-        for (entities, springs, components) in tables {
-            step_table(
-                entities, springs, components, steps, shared, caches, &commands,
-            );
-        }
     } else {
-        // A property on a sparse-set component: entity by entity.
         for item in &mut springs {
             step_entity(item, steps, shared, caches, &commands);
         }
@@ -139,7 +144,7 @@ fn step_entity<P: SpringProperty>(
     // The spring changes every frame it is stepped; the property only when it moves.
     let spring = spring.into_inner();
     let current = P::get(&component);
-    match spring.step_usual(current, steps, false, untouched, table) {
+    match spring.step_usual(current, &steps, false, untouched, table) {
         UsualStep::Moved(value) => P::set(&mut component, value),
         UsualStep::Still => {}
         UsualStep::Declined => {
@@ -158,35 +163,86 @@ fn step_entity<P: SpringProperty>(
     }
 }
 
+/// What every spring's step reads: this frame's steps, the transition table, the threads'
+/// caches and the commands that put springs to sleep.
+type StepContext<'a> = (
+    FrameSteps,
+    &'a TransitionTable,
+    &'a Parallel<TransitionCache>,
+    &'a ParallelCommands<'a, 'a>,
+);
+
+/// Rows of a table per parallel task, at least: enough work to outweigh handing it out.
+const STEP_CHUNK: usize = 2048;
+
 /// The awake, visible springs of one table, from its columns: [`step_entity`] for each, without
-/// the per-entity `Mut` wrappers. Every spring is marked changed (it was stepped), a property
-/// only where it moved.
-#[inline(never)]
+/// the per-entity `Mut` wrappers, in chunks on the compute pool's `threads` if there are several.
+/// Every spring is marked changed (it was stepped), a property only where it moved.
 fn step_table<P: SpringProperty>(
-    entities: &[Entity],
-    springs: ContiguousMut<PropertySpring<P>>,
-    components: ContiguousMut<P::Component>,
-    steps: FrameSteps,
-    table: &TransitionTable,
-    caches: &Parallel<TransitionCache>,
-    commands: &ParallelCommands,
+    (entities, springs, components): (
+        &[Entity],
+        ContiguousMut<PropertySpring<P>>,
+        ContiguousMut<P::Component>,
+    ),
+    context: StepContext,
+    threads: usize,
 ) {
     let (springs, mut spring_ticks) = ContiguousMut::bypass_change_detection_split(springs);
     let (components, mut component_ticks) =
         ContiguousMut::bypass_change_detection_split(components);
-    let (last_run, this_run) = (spring_ticks.last_run(), spring_ticks.this_run());
-    let rows = springs.iter_mut().zip(components.iter_mut()).zip(
-        spring_ticks
-            .changed()
-            .iter()
-            .zip(component_ticks.changed_mut()),
-    );
+    let ticks = (spring_ticks.last_run(), spring_ticks.this_run());
+    let spring_changed = spring_ticks.changed();
+    let component_changed = component_ticks.changed_mut();
+    // Chunks that give every thread a few, so that one slow chunk does not hold up the rest.
+    // (A pool of no threads runs its tasks on this one.)
+    let chunk = (springs.len() / (4 * threads.max(1))).max(STEP_CHUNK);
+    if threads > 1 && springs.len() > chunk {
+        ComputeTaskPool::get().scope(|scope| {
+            let chunks = entities
+                .chunks(chunk)
+                .zip(springs.chunks_mut(chunk))
+                .zip(components.chunks_mut(chunk))
+                .zip(spring_changed.chunks(chunk))
+                .zip(component_changed.chunks_mut(chunk));
+            for ((((entities, springs), components), spring_changed), component_changed) in chunks {
+                scope.spawn(async move {
+                    step_rows(
+                        (entities, springs, components),
+                        (spring_changed, component_changed, ticks),
+                        context,
+                    );
+                });
+            }
+        });
+    } else {
+        step_rows(
+            (entities, springs, components),
+            (spring_changed, component_changed, ticks),
+            context,
+        );
+    }
+    spring_ticks.mark_all_as_changed();
+    mark_changed_by(&mut component_ticks);
+}
+
+/// [`step_table`]'s loop over rows: the springs' changed ticks are read (a spring changed since
+/// the last run was touched by something else), the properties' written where they moved.
+#[inline(never)]
+fn step_rows<P: SpringProperty>(
+    (entities, springs, components): (&[Entity], &mut [PropertySpring<P>], &mut [P::Component]),
+    (spring_changed, component_changed, (last_run, this_run)): (&[Tick], &mut [Tick], (Tick, Tick)),
+    (steps, table, caches, commands): StepContext,
+) {
+    let rows = springs
+        .iter_mut()
+        .zip(components.iter_mut())
+        .zip(spring_changed.iter().zip(component_changed));
     for (row, ((spring, component), (spring_changed, component_changed))) in rows.enumerate() {
         // Changed since this system last ran: by something else than this system (see
         // `step_entity`).
         let untouched = !spring_changed.is_newer_than(last_run, this_run);
         let current = P::get(component);
-        let moved = match spring.step_usual(current, steps, false, untouched, table) {
+        let moved = match spring.step_usual(current, &steps, false, untouched, table) {
             UsualStep::Moved(value) => {
                 P::set(component, value);
                 true
@@ -204,8 +260,6 @@ fn step_table<P: SpringProperty>(
             *component_changed = this_run;
         }
     }
-    spring_ticks.mark_all_as_changed();
-    mark_changed_by(&mut component_ticks);
 }
 
 /// Where Bevy tracks change locations (feature `track_location`), records this system as what

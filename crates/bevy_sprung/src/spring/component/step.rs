@@ -124,7 +124,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         untouched: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        match self.step_usual(current, steps, hidden, untouched, table) {
+        match self.step_usual(current, &steps, hidden, untouched, table) {
             UsualStep::Moved(value) => Frame {
                 outcome: Stepped::Moving,
                 write: Some(value),
@@ -149,17 +149,17 @@ impl<P: SpringProperty> PropertySpring<P> {
     pub(crate) fn step_usual(
         &mut self,
         current: ValueOf<P>,
-        steps: FrameSteps,
+        steps: &FrameSteps,
         hidden: bool,
         untouched: bool,
         table: &TransitionTable,
     ) -> UsualStep<ValueOf<P>> {
-        let clock = FrameSteps::index(self.clock);
-        let dt = steps.of(clock);
         let slot = if untouched & !hidden & (self.motion.generation == table.generation()) {
             Some(self.motion.slot)
         } else {
-            self.usual_slot(dt, clock, hidden, table)
+            // The steps by reference: as a value, the loop around copied them for every spring.
+            let clock = FrameSteps::index(self.clock);
+            self.usual_slot(steps.of(clock), clock, hidden, table)
         };
         if let Some([d00, d01, d10, d11]) = slot.and_then(|slot| table.increments(slot)) {
             let target = self.target;
