@@ -1,7 +1,7 @@
 //! The systems that step springs, put them to sleep and wake them.
 
-use bevy::ecs::change_detection::Tick;
 use bevy::ecs::change_detection::{ContiguousComponentTicksMut, ContiguousMut, MaybeLocation};
+use bevy::ecs::change_detection::{ContiguousRef, MAX_CHANGE_AGE, Tick};
 use bevy::ecs::system::ParallelCommands;
 use bevy::prelude::*;
 use bevy::tasks::ComputeTaskPool;
@@ -333,22 +333,129 @@ fn put_to_sleep<P: SpringProperty>(commands: &ParallelCommands, entity: Entity) 
 
 /// Wakes sleeping springs on property `P` whose target changed or that were kicked.
 ///
-/// Only springs changed since the last run are looked at (a change-tick scan), so a scene of
-/// sleeping springs costs one comparison per spring per frame.
+/// Only springs changed since the last run are looked at. Their change ticks are scanned a
+/// table column at a time, in blocks tested without a branch per spring: a scene of sleeping
+/// springs costs well under one instruction per spring per frame.
 pub(crate) fn wake_springs<P: SpringProperty>(
     mut commands: Commands,
     mut tracker: Option<ResMut<SettleTracker>>,
-    springs: Query<
-        (Entity, &PropertySpring<P>, Has<SpringGroup>),
-        (With<SpringAsleep<P>>, Changed<PropertySpring<P>>),
-    >,
+    asleep: Query<(Entity, Ref<PropertySpring<P>>, Has<SpringGroup>), With<SpringAsleep<P>>>,
 ) {
-    for (entity, spring, grouped) in &springs {
+    let mut wake = |entity: Entity, spring: &PropertySpring<P>, grouped: bool| {
         if spring.wants_to_move() {
             commands.entity(entity).try_remove::<SpringAsleep<P>>();
             // Woken (perhaps to settle again this very frame): its group hears of it.
             if grouped && let Some(tracker) = tracker.as_mut() {
                 tracker.moving(entity);
+            }
+        }
+    };
+    let Ok(tables) = asleep.contiguous_iter() else {
+        // Not reached (the components are in tables): the same, spring by spring.
+        for (entity, spring, grouped) in &asleep {
+            if spring.is_changed() {
+                wake(entity, &spring, grouped);
+            }
+        }
+        return;
+    };
+    for (entities, springs, grouped) in tables {
+        let (springs, ticks) = ContiguousRef::split(springs);
+        let (last_run, this_run) = (ticks.last_run(), ticks.this_run());
+        let blocks = ticks
+            .changed()
+            .chunks(WAKE_BLOCK)
+            .zip(springs.chunks(WAKE_BLOCK))
+            .zip(entities.chunks(WAKE_BLOCK));
+        for ((changed, springs), entities) in blocks {
+            if !any_newer(changed, last_run, this_run) {
+                continue;
+            }
+            for ((tick, spring), &entity) in changed.iter().zip(springs).zip(entities) {
+                if tick.is_newer_than(last_run, this_run) {
+                    wake(entity, spring, grouped);
+                }
+            }
+        }
+    }
+}
+
+/// Springs whose change ticks [`wake_springs`] tests together.
+const WAKE_BLOCK: usize = 256;
+
+/// Whether any of `ticks` is newer than `last_run` ([`Tick::is_newer_than`] for a block, in a
+/// form the compiler vectorises to four instructions per four ticks).
+///
+/// A tick is newer if its age `k = this_run − tick` is below the system's,
+/// `s = this_run − last_run` (clamped as Bevy does; an age past the clamp is past `s` too; with
+/// `s = 0` none is), that
+/// is if `tick − (this_run − s + 1) = s − 1 − k` lies in `[0, s)` (unsigned, wrapping). Biasing
+/// both sides by 2³¹ turns that unsigned test into a signed one, which SSE2 has; the block is old
+/// if every tick is past the last newer value.
+#[inline]
+fn any_newer(ticks: &[Tick], last_run: Tick, this_run: Tick) -> bool {
+    const BIAS: u32 = 1 << 31;
+    let since_system = this_run
+        .get()
+        .wrapping_sub(last_run.get())
+        .min(MAX_CHANGE_AGE);
+    if since_system == 0 {
+        return false;
+    }
+    let origin = this_run
+        .get()
+        .wrapping_sub(since_system)
+        .wrapping_add(1)
+        .wrapping_add(BIAS);
+    let last_newer = (since_system ^ BIAS).cast_signed().wrapping_sub(1);
+    let all_old = ticks.iter().fold(true, |all, tick| {
+        all & (tick.get().wrapping_sub(origin).cast_signed() > last_newer)
+    });
+    !all_old
+}
+
+#[cfg(test)]
+mod tests {
+    use bevy::ecs::change_detection::{MAX_CHANGE_AGE, Tick};
+
+    use super::any_newer;
+
+    /// The block test agrees with Bevy's own, tick by tick, across wraparound, clamped ages and
+    /// a system that ran this very tick.
+    #[test]
+    fn the_block_change_test_is_bevys() {
+        let edges = [
+            0,
+            1,
+            2,
+            3,
+            1 << 31,
+            (1 << 31) + 1,
+            MAX_CHANGE_AGE - 1,
+            MAX_CHANGE_AGE,
+        ];
+        let mut seed = 0x9e37_79b9_u32;
+        let mut random = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        for this_run in [0, 1, 5, 1 << 31, u32::MAX, u32::MAX - 3, 0x1234_5678] {
+            let mut ages: Vec<u32> = edges.to_vec();
+            ages.extend(edges.iter().map(|edge| edge.wrapping_neg()));
+            ages.extend((0..64).map(|_| random()));
+            for &system_age in &ages {
+                let last_run = Tick::new(this_run.wrapping_sub(system_age));
+                let this_run = Tick::new(this_run);
+                for &age in &ages {
+                    let tick = Tick::new(this_run.get().wrapping_sub(age));
+                    assert_eq!(
+                        any_newer(&[tick], last_run, this_run),
+                        tick.is_newer_than(last_run, this_run),
+                        "tick {tick:?}, last run {last_run:?}, this run {this_run:?}"
+                    );
+                }
             }
         }
     }
