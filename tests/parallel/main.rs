@@ -1,7 +1,7 @@
 //! The springs step on a compute pool of two threads, as `SpringPlugin`'s docs set it up: the
-//! per-entity step in parallel, and the transition table prepared in parallel chunks (more
-//! than 4096 distinct springs). A test binary of its own: Bevy's task pools are made once per
-//! process, and the other tests use the default pools.
+//! table's springs stepped in parallel chunks (more than 2048 rows), and the transition table
+//! prepared in parallel chunks (more than 4096 distinct springs). A test binary of its own:
+//! Bevy's task pools are made once per process, and the other tests use the default pools.
 
 use core::time::Duration;
 

@@ -63,8 +63,8 @@ fn measured(app: &mut App, method: Method, frames: u64, vary: bool) {
 fn one(method: Method, count: usize, frames: u64, vary: bool) {
     let mut app = method.app(count, false);
     // Every schedule (the spring schedule too) on the calling thread: callgrind counts only the
-    // thread `measured` runs on. The driver runs this with no compute threads, so `par_iter`
-    // batches run on this thread as well.
+    // thread `measured` runs on. The driver runs this with no compute threads, so the springs
+    // step in one loop on this thread as well.
     for (_, schedule) in app.world_mut().resource_mut::<Schedules>().iter_mut() {
         schedule.set_executor(SingleThreadedExecutor::new());
     }

@@ -22,8 +22,9 @@ type Seen = Without<crate::visibility::CatchUpWhenHidden>;
 #[cfg(not(feature = "visibility"))]
 type Seen = ();
 
-/// Steps every awake spring on property `P`, in parallel on the compute pool's threads, and
-/// puts the ones that settle to sleep (triggering [`SpringSettled<P>`]).
+/// Steps every awake spring on property `P`, a table's columns at a time (split into chunks
+/// over the compute pool's threads if it has several), and puts the ones that settle to sleep
+/// (triggering [`SpringSettled<P>`]).
 ///
 /// Bevy gives the compute pool the cores left after its I/O and async pools: on a machine with
 /// two cores that is one thread, and the springs step on it alone. See
