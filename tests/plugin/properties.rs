@@ -23,6 +23,71 @@ spring_property!(
     } as Linear<f32>
 );
 
+/// The same component, stored in a sparse set: its springs step entity by entity, not from
+/// table columns.
+#[derive(Component, Default)]
+#[component(storage = "SparseSet")]
+pub(crate) struct SparseLoudness(f32);
+
+spring_property!(
+    /// A user property on a sparse-set component.
+    pub(crate) SparseLoudnessLevel: SparseLoudness::0 as Linear<f32>
+);
+
+/// Whether `Loudness` and `SparseLoudness` changed since the last frame, seen right after the
+/// springs ran.
+#[derive(Resource, Default)]
+struct LoudnessChanged(bool, bool);
+
+fn record_loudness_changes(
+    mut changed: ResMut<LoudnessChanged>,
+    table: Query<(), Changed<Loudness>>,
+    sparse: Query<(), Changed<SparseLoudness>>,
+) {
+    *changed = LoudnessChanged(!table.is_empty(), !sparse.is_empty());
+}
+
+/// A property on a sparse-set component steps as one in a table does (the same values, bit for
+/// bit, every frame), marks its component changed in the same frames, and settles.
+#[test]
+fn a_sparse_set_property_steps_as_a_table_one_does() {
+    let mut app = app(144);
+    app.add_plugins((
+        SpringPropertyPlugin::<LoudnessLevel>::default(),
+        SpringPropertyPlugin::<SparseLoudnessLevel>::default(),
+    ))
+    .init_resource::<LoudnessChanged>()
+    .add_systems(PostUpdate, record_loudness_changes.after(SpringSystems));
+    let target = 12_345.67;
+    let table = app
+        .world_mut()
+        .spawn((
+            Loudness(0.0),
+            PropertySpring::<LoudnessLevel>::new(Spring::bouncy(), target),
+        ))
+        .id();
+    let sparse = app
+        .world_mut()
+        .spawn((
+            SparseLoudness(0.0),
+            PropertySpring::<SparseLoudnessLevel>::new(Spring::bouncy(), target),
+        ))
+        .id();
+    let mut changed_frames = 0;
+    for _ in 0..1200 {
+        app.update();
+        let table_value = app.world().get::<Loudness>(table).unwrap().0;
+        let sparse_value = app.world().get::<SparseLoudness>(sparse).unwrap().0;
+        assert_eq!(table_value.to_bits(), sparse_value.to_bits());
+        let changed = app.world().resource::<LoudnessChanged>();
+        assert_eq!(changed.0, changed.1);
+        changed_frames += usize::from(changed.1);
+    }
+    assert!(changed_frames > 100, "{changed_frames}");
+    assert_eq!(app.world().get::<SparseLoudness>(sparse).unwrap().0, target);
+    assert!(asleep::<SparseLoudnessLevel>(&app, sparse));
+}
+
 #[test]
 fn a_user_property_springs_and_settles() {
     let mut app = app(60);

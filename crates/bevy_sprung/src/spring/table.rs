@@ -218,7 +218,9 @@ impl TransitionTable {
     /// virtual time varies from frame to frame), each slot is extended or recomputed, split
     /// over the compute pool's threads when it has more than one.
     pub(crate) fn prepare(&mut self, steps: FrameSteps) {
-        let prepare = |slots: &mut [Slot], prepared: &mut [Prepared]| {
+        // The steps copied into the closure: captured by reference, a slot cost 4 instructions
+        // more (callgrind) where the closure was not inlined.
+        let prepare = move |slots: &mut [Slot], prepared: &mut [Prepared]| {
             for (slot, prepared) in slots.iter_mut().zip(prepared) {
                 // The clock from `prepared`: a frame with the same steps reads nothing else.
                 let dt = steps.of(prepared.clock);
