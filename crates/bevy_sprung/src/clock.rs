@@ -43,9 +43,10 @@ pub(crate) struct SpringTime<'w> {
 }
 
 /// This frame's time steps, read once per system run: by clock, and for springs that use the
-/// default one.
+/// default one. The default's step is there twice, so that any two-bit index is one (a clock
+/// index is masked rather than bounds-checked: the frame's preparation looks up four at a time).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct FrameSteps([f32; 3]);
+pub(crate) struct FrameSteps([f32; 4]);
 
 impl SpringTime<'_> {
     /// The time steps of this frame.
@@ -55,7 +56,7 @@ impl SpringTime<'_> {
             SpringClock::Game => game,
             SpringClock::Real => real,
         };
-        FrameSteps([game, real, default])
+        FrameSteps([game, real, default, default])
     }
 }
 
@@ -74,7 +75,7 @@ impl FrameSteps {
     /// The step of the clock at `index`.
     #[inline]
     pub(crate) fn of(self, index: u8) -> f32 {
-        self.0[usize::from(index)]
+        self.0[usize::from(index & 3)]
     }
 
     /// The step of `clock`, or of the default clock for `None`.
@@ -86,7 +87,13 @@ impl FrameSteps {
     /// The steps of a test: `dt` on every clock.
     #[cfg(test)]
     pub(crate) fn all(dt: f32) -> Self {
-        Self([dt; 3])
+        Self([dt; 4])
+    }
+
+    /// The steps of a test: the game clock's, the real clock's and the default clock's.
+    #[cfg(test)]
+    pub(crate) fn each(game: f32, real: f32, default: f32) -> Self {
+        Self([game, real, default, default])
     }
 }
 

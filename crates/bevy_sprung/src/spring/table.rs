@@ -1,5 +1,6 @@
 //! Every distinct spring's transition, kept across frames: what the per-entity step reads.
 
+use bevy::math::{BVec4A, Mat4, Vec4};
 use bevy::platform::collections::HashMap;
 use bevy::tasks::ComputeTaskPool;
 use bevy::utils::Parallel;
@@ -89,83 +90,165 @@ impl Anchor {
             reach: reach.min(0.1 * dt),
         }
     }
+}
 
-    /// The increment matrix over `dt`, if within reach: `f1` and `g0` continued by their Taylor
-    /// series in `δ = dt − anchor` (Horner), and
+/// The anchors of four consecutive slots, one per lane: a frame's extension runs on the four
+/// at once, each vector operation the scalar one in every lane (so a lane's result is, bit for
+/// bit, what one anchor alone would give).
+#[derive(Clone, Copy, Debug)]
+struct AnchorLanes {
+    dt: Vec4,
+    f1: [Vec4; 5],
+    g0: Vec4,
+    omega_squared: Vec4,
+    rate: Vec4,
+    reach: Vec4,
+}
+
+impl AnchorLanes {
+    /// Every lane the same anchor.
+    #[cfg(test)]
+    fn splat(anchor: &Anchor) -> Self {
+        Self {
+            dt: Vec4::splat(anchor.dt),
+            f1: anchor.f1.map(Vec4::splat),
+            g0: Vec4::splat(anchor.g0),
+            omega_squared: Vec4::splat(anchor.omega_squared),
+            rate: Vec4::splat(anchor.rate),
+            reach: Vec4::splat(anchor.reach),
+        }
+    }
+
+    /// Makes lane `lane` `anchor`.
+    fn set(&mut self, lane: usize, anchor: &Anchor) {
+        self.dt[lane] = anchor.dt;
+        for (coefficients, coefficient) in self.f1.iter_mut().zip(anchor.f1) {
+            coefficients[lane] = coefficient;
+        }
+        self.g0[lane] = anchor.g0;
+        self.omega_squared[lane] = anchor.omega_squared;
+        self.rate[lane] = anchor.rate;
+        self.reach[lane] = anchor.reach;
+    }
+
+    /// Each lane's increment matrix over its `dt` (the rows of `D` as vectors over the lanes),
+    /// and which lanes are within reach (only those are valid): `f1` and `g0` continued by
+    /// their Taylor series in `δ = dt − anchor` (Horner), and
     /// `D = [[−ω²·g0, f1], [−ω²·f1, −(ω²·g0 + 2b·f1)]]`: every entry a sum of terms of one sign
     /// at small `δ`, so nothing cancels (`D₁₁` is not formed as `g − 1`).
     #[inline]
-    fn increments(&self, dt: f32) -> Option<[f32; 4]> {
+    fn increments(&self, dt: Vec4) -> ([Vec4; 4], BVec4A) {
         let h = dt - self.dt;
         // NaN-safe: a NaN or infinite delta is not within reach, nor anything of `NONE`.
-        let within = h.abs() <= self.reach;
-        if !within {
-            return None;
-        }
+        let within = h.abs().cmple(self.reach);
         let [c0, c1, c2, c3, c4] = self.f1;
         let f1 = c0 + h * (c1 + h * (c2 + h * (c3 + h * c4)));
         // g0(dt + h) = g0 + Σ f1⁽ⁿ⁾·hⁿ⁺¹/(n+1)!: the same coefficients over n + 1.
         let g0 = self.g0
-            + h * (c0
-                + h * (c1 / 2.0
-                    + h * (c2 * (1.0 / 3.0) + h * (c3 / 4.0 + h * (c4 * (1.0 / 5.0))))));
+            + h * (c0 + h * (c1 * 0.5 + h * (c2 * (1.0 / 3.0) + h * (c3 * 0.25 + h * (c4 * 0.2)))));
         let w2 = self.omega_squared;
         let w2g0 = w2 * g0;
-        Some([-w2g0, f1, -(w2 * f1), -(w2g0 + self.rate * f1)])
+        ([-w2g0, f1, -(w2 * f1), -(w2g0 + self.rate * f1)], within)
     }
 }
 
-/// One distinct spring (and clock): what its transitions are computed from. Read while
-/// preparing a frame, written only when a transition is computed exactly.
+/// The rows of four lanes' increment matrices, transposed: column `l` is lane `l`'s matrix,
+/// row-major.
+#[inline]
+fn by_lane([d00, d01, d10, d11]: [Vec4; 4]) -> Mat4 {
+    Mat4::from_cols(d00, d01, d10, d11).transpose()
+}
+
+/// One distinct spring (and clock): what its transitions are computed exactly from, when its
+/// anchor does not reach the frame's time step.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Slot {
     key: Key,
     /// The spring the key stands for (validated when the slot was made).
     spring: Spring<f32>,
-    anchor: Anchor,
 }
 
-/// A slot's transition for the current time step: what the per-entity step reads, kept apart
-/// from the slots (24 bytes against 68) so that the step and the frame's preparation stream no
-/// more than they use, and preparing dirties no slot.
+/// Four consecutive slots' state for preparing a frame: what time step each lane's increments
+/// are for, on which clock, and the anchors they are extended from.
 #[derive(Clone, Copy, Debug)]
-struct Prepared {
-    /// `D = M − I` over `dt`, row-major.
-    increments: [f32; 4],
-    /// The time step `increments` is for (NaN: none yet).
-    dt: f32,
-    /// The slot's clock index ([`FrameSteps`]).
-    clock: u8,
+struct Lanes {
+    /// The time step each lane's increments are for (NaN: none yet).
+    prepared: Vec4,
+    /// Each lane's clock index ([`FrameSteps`]).
+    clocks: [u8; 4],
+    anchors: AnchorLanes,
 }
 
-impl Slot {
-    /// Makes `prepared`'s increments those over `dt`, if they are for another time step:
-    /// extended from the anchor when it is close (inline: a game's time step changes every
-    /// frame, and this is a few multiply-adds), otherwise computed exactly (and anchored there).
+impl Lanes {
+    /// Lanes of no slot yet: on the default clock, their (unused) increments the zeros that an
+    /// anchor of zeros reaching everywhere extends to, so that they never need an exact
+    /// transition.
+    const EMPTY: Self = Self {
+        prepared: Vec4::NAN,
+        clocks: [2; 4],
+        anchors: AnchorLanes {
+            dt: Vec4::ZERO,
+            f1: [Vec4::ZERO; 5],
+            g0: Vec4::ZERO,
+            omega_squared: Vec4::ZERO,
+            rate: Vec4::ZERO,
+            reach: Vec4::INFINITY,
+        },
+    };
+
+    /// Makes the increments of the four slots (`increments`, by lane; `slots`: those of them
+    /// that exist) those over their clocks' time steps in `steps`: the lanes whose step is
+    /// new, extended together (inline: a game's time step changes every frame, and this is a
+    /// few vector multiply-adds per four slots), or computed exactly where out of reach.
     #[inline]
-    fn prepare(&mut self, prepared: &mut Prepared, dt: f32) {
-        #[expect(
-            clippy::float_cmp,
-            reason = "the increments are for exactly this time step, bit for bit"
-        )]
-        if prepared.dt != dt {
-            match self.anchor.increments(dt) {
-                Some(increments) => prepared.increments = increments,
-                None => self.recompute(prepared, dt),
+    fn prepare(&mut self, increments: &mut [[f32; 4]; 4], slots: &[Slot], steps: FrameSteps) {
+        let [a, b, c, d] = self.clocks;
+        let dt = Vec4::new(steps.of(a), steps.of(b), steps.of(c), steps.of(d));
+        // The lanes whose increments are for another time step (NaN: none yet).
+        let stale = dt.cmpne(self.prepared);
+        if !stale.any() {
+            return;
+        }
+        let (rows, within) = self.anchors.increments(dt);
+        if stale.all() & within.all() {
+            let by_lane = by_lane(rows);
+            for (lane, increments) in increments.iter_mut().enumerate() {
+                *increments = by_lane.col(lane).to_array();
             }
-            prepared.dt = dt;
+            self.prepared = dt;
+        } else {
+            self.prepare_lanes(increments, slots, (dt, stale, within), rows);
         }
     }
 
-    /// The increments over `dt` computed exactly, and the anchor moved there.
+    /// [`prepare`](Self::prepare) lane by lane: the stale lanes within reach take their
+    /// extension, the others a transition computed exactly (and are anchored there).
     #[cold]
     #[inline(never)]
-    fn recompute(&mut self, prepared: &mut Prepared, dt: f32) {
-        let spring = self.spring;
-        let transition = spring.transition(dt);
-        let [[d00, d01], [d10, d11]] = transition.increment_matrix();
-        prepared.increments = [d00, d01, d10, d11];
-        self.anchor = Anchor::new(&spring, dt, &transition);
+    fn prepare_lanes(
+        &mut self,
+        increments: &mut [[f32; 4]; 4],
+        slots: &[Slot],
+        (dt, stale, within): (Vec4, BVec4A, BVec4A),
+        rows: [Vec4; 4],
+    ) {
+        let by_lane = by_lane(rows);
+        for (lane, increments) in increments.iter_mut().enumerate() {
+            if !stale.test(lane) {
+                continue;
+            }
+            if within.test(lane) {
+                *increments = by_lane.col(lane).to_array();
+            } else if let Some(slot) = slots.get(lane) {
+                let (spring, dt) = (slot.spring, dt[lane]);
+                let transition = spring.transition(dt);
+                let [[d00, d01], [d10, d11]] = transition.increment_matrix();
+                *increments = [d00, d01, d10, d11];
+                self.anchors
+                    .set(lane, &Anchor::new(&spring, dt, &transition));
+            }
+            self.prepared[lane] = dt[lane];
+        }
     }
 }
 
@@ -186,8 +269,11 @@ impl Slot {
 #[derive(Default)]
 pub(crate) struct TransitionTable {
     slots: Vec<Slot>,
-    /// Each slot's transition for this frame, by the same index.
-    prepared: Vec<Prepared>,
+    /// Each slot's increments `D = M − I` over this frame's time step, row-major, by the same
+    /// index (16 bytes: all the per-entity step reads), padded to a multiple of four.
+    increments: Vec<[f32; 4]>,
+    /// The slots' preparation state, four slots a lane each.
+    lanes: Vec<Lanes>,
     index: HashMap<Key, u32>,
     generation: u32,
     /// Slots springs asked for this frame, per thread.
@@ -214,31 +300,33 @@ impl TransitionTable {
     }
 
     /// Makes every slot's increments those over its clock's time step in `steps`. A frame with
-    /// the same time steps as the last costs one comparison per slot; with new ones (Bevy's
-    /// virtual time varies from frame to frame), each slot is extended or recomputed, split
-    /// over the compute pool's threads when it has more than one.
+    /// the same time steps as the last costs one vector comparison per four slots; with new
+    /// ones (Bevy's virtual time varies from frame to frame), the slots are extended four at a
+    /// time or recomputed, split over the compute pool's threads when it has more than one.
     pub(crate) fn prepare(&mut self, steps: FrameSteps) {
         // The steps copied into the closure: captured by reference, a slot cost 4 instructions
         // more (callgrind) where the closure was not inlined.
-        let prepare = move |slots: &mut [Slot], prepared: &mut [Prepared]| {
-            for (slot, prepared) in slots.iter_mut().zip(prepared) {
-                // The clock from `prepared`: a frame with the same steps reads nothing else.
-                let dt = steps.of(prepared.clock);
-                slot.prepare(prepared, dt);
+        let prepare = move |lanes: &mut [Lanes], increments: &mut [[f32; 4]], slots: &[Slot]| {
+            let (increments, _) = increments.as_chunks_mut::<4>();
+            for ((lanes, increments), slots) in
+                lanes.iter_mut().zip(increments).zip(slots.chunks(4))
+            {
+                lanes.prepare(increments, slots, steps);
             }
         };
         if compute_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
             ComputeTaskPool::get().scope(|scope| {
                 let chunks = self
-                    .slots
-                    .chunks_mut(PREPARE_CHUNK)
-                    .zip(self.prepared.chunks_mut(PREPARE_CHUNK));
-                for (slots, prepared) in chunks {
-                    scope.spawn(async move { prepare(slots, prepared) });
+                    .lanes
+                    .chunks_mut(PREPARE_CHUNK / 4)
+                    .zip(self.increments.chunks_mut(PREPARE_CHUNK))
+                    .zip(self.slots.chunks(PREPARE_CHUNK));
+                for ((lanes, increments), slots) in chunks {
+                    scope.spawn(async move { prepare(lanes, increments, slots) });
                 }
             });
         } else {
-            prepare(&mut self.slots, &mut self.prepared);
+            prepare(&mut self.lanes, &mut self.increments, &self.slots);
         }
     }
 
@@ -246,9 +334,7 @@ impl TransitionTable {
     /// it in this generation.
     #[inline]
     pub(crate) fn increments(&self, index: u32) -> Option<[f32; 4]> {
-        self.prepared
-            .get(index as usize)
-            .map(|prepared| prepared.increments)
+        self.increments.get(index as usize).copied()
     }
 
     /// The index of the slot of `spring` on clock `clock`, if the table has one.
@@ -281,23 +367,25 @@ impl TransitionTable {
             let Ok(index) = u32::try_from(self.slots.len()) else {
                 break;
             };
-            self.slots.push(Slot {
-                key,
-                spring,
-                anchor: Anchor::NONE,
-            });
-            self.prepared.push(Prepared {
-                increments: [0.0; 4],
-                dt: f32::NAN,
-                clock: key.clock,
-            });
+            let lane = self.slots.len() % 4;
+            if lane == 0 {
+                self.lanes.push(Lanes::EMPTY);
+                self.increments.extend([[0.0; 4]; 4]);
+            }
+            if let Some(lanes) = self.lanes.last_mut() {
+                lanes.clocks[lane] = key.clock;
+                lanes.prepared[lane] = f32::NAN;
+                lanes.anchors.set(lane, &Anchor::NONE);
+            }
+            self.slots.push(Slot { key, spring });
             self.index.insert(key, index);
         }
         // The per-thread buffers keep their capacity for the next frame.
         self.requests = requests;
         if self.slots.len() > 2 * springs + 64 {
             self.slots.clear();
-            self.prepared.clear();
+            self.increments.clear();
+            self.lanes.clear();
             self.index.clear();
             self.generation = self.generation.wrapping_add(2);
         }
@@ -323,16 +411,33 @@ impl TransitionTable {
 
 #[cfg(test)]
 mod tests {
-    use super::Anchor;
+    use bevy::math::Vec4;
     use sprung::Spring;
+
+    use super::{Anchor, AnchorLanes, TransitionTable};
+    use crate::clock::FrameSteps;
+
+    /// `anchor`'s increments over `dt`, if within reach, from lane `lane` of lanes holding it
+    /// there and other anchors elsewhere.
+    fn extend(anchor: &Anchor, dt: f32, lane: usize) -> Option<[f32; 4]> {
+        let other = Spring::from_natural_frequency(3.0, 0.7).unwrap();
+        let mut lanes = AnchorLanes::splat(&Anchor::new(&other, 0.5, &other.transition(0.5)));
+        lanes.set(lane, anchor);
+        let mut steps = Vec4::splat(0.5);
+        steps[lane] = dt;
+        let (rows, within) = lanes.increments(steps);
+        within.test(lane).then(|| rows.map(|row| row[lane]))
+    }
 
     /// The worst error of an extended increment matrix against the exact one (computed in
     /// `f64` for the same `f32` parameters), in units of `f32`'s roundoff relative to each
     /// entry: over springs from nearly undamped to heavily over-damped, slow to stiff, at frame
-    /// rates from 30 to 360 fps, and time steps across the anchor's reach on both sides.
+    /// rates from 30 to 360 fps, time steps across the anchor's reach on both sides, and every
+    /// lane.
     fn worst_extension_error() -> f64 {
         let unit = f64::from(f32::EPSILON) / 2.0;
         let mut worst = 0.0_f64;
+        let mut lane = 0;
         for omega in [0.1_f32, 1.0, 8.0, 40.0, 300.0, 2000.0] {
             for zeta in [0.02_f32, 0.3, 1.0, 1.0001, 4.0, 60.0] {
                 let spring = Spring::from_natural_frequency(omega, zeta).unwrap();
@@ -343,7 +448,8 @@ mod tests {
                     assert!(anchor.reach > 0.0);
                     for fraction in [-0.99_f32, -0.5, -0.01, 0.01, 0.5, 0.99] {
                         let step = dt + fraction * anchor.reach;
-                        let extended = anchor.increments(step).unwrap();
+                        lane = (lane + 1) % 4;
+                        let extended = extend(&anchor, step, lane).unwrap();
                         let [[e00, e01], [e10, e11]] =
                             exact.transition(f64::from(step)).increment_matrix();
                         for (got, want) in extended.into_iter().zip([e00, e01, e10, e11]) {
@@ -372,11 +478,85 @@ mod tests {
         let spring = Spring::from_natural_frequency(10.0, 0.5).unwrap();
         let dt = 1.0 / 60.0;
         let anchor = Anchor::new(&spring, dt, &spring.transition(dt));
-        assert!(anchor.increments(dt + 1.01 * anchor.reach).is_none());
-        assert!(anchor.increments(dt - 1.01 * anchor.reach).is_none());
-        assert!(anchor.increments(f32::NAN).is_none());
-        assert!(anchor.increments(f32::INFINITY).is_none());
-        assert!(Anchor::NONE.increments(0.0).is_none());
-        assert!(Anchor::NONE.increments(1.0 / 60.0).is_none());
+        for lane in 0..4 {
+            assert!(extend(&anchor, dt + 0.99 * anchor.reach, lane).is_some());
+            assert!(extend(&anchor, dt + 1.01 * anchor.reach, lane).is_none());
+            assert!(extend(&anchor, dt - 1.01 * anchor.reach, lane).is_none());
+            assert!(extend(&anchor, f32::NAN, lane).is_none());
+            assert!(extend(&anchor, f32::INFINITY, lane).is_none());
+            assert!(extend(&Anchor::NONE, 0.0, lane).is_none());
+            assert!(extend(&Anchor::NONE, 1.0 / 60.0, lane).is_none());
+        }
+    }
+
+    /// The worst error, in `u` relative to each entry, of every slot's prepared increments
+    /// against the exact ones (in `f64`) over its clock's step in `steps`.
+    fn worst_prepared_error(
+        table: &TransitionTable,
+        slots: &[(Spring<f32>, u8)],
+        steps: FrameSteps,
+    ) -> f64 {
+        let unit = f64::from(f32::EPSILON) / 2.0;
+        let mut worst = 0.0_f64;
+        for (index, (spring, clock)) in (0_u32..).zip(slots) {
+            let slot = table.lookup(spring, *clock).unwrap();
+            assert_eq!(slot, index, "slots are made in the order asked for");
+            let got = table.increments(slot).unwrap();
+            let dt = f64::from(steps.of(*clock));
+            let [[e00, e01], [e10, e11]] = Spring::<f64>::from(*spring)
+                .transition(dt)
+                .increment_matrix();
+            for (got, want) in got.into_iter().zip([e00, e01, e10, e11]) {
+                let error = (f64::from(got) - want).abs() / (unit * want.abs());
+                worst = worst.max(error);
+            }
+        }
+        worst
+    }
+
+    /// A table of a number of slots that fills no whole set of lanes, on all three clocks:
+    /// every slot's increments are its own spring's over its own clock's step, whether computed
+    /// exactly (first frame, and a step out of reach), extended (a step nearby), or kept (the
+    /// same step, bit for bit); a clock whose step alone changed changes only its slots.
+    #[test]
+    fn every_slot_is_prepared_for_its_own_clock() {
+        let slots: Vec<(Spring<f32>, u8)> = (0..11_u8)
+            .map(|i| {
+                let omega = 2.0 + 7.0 * f32::from(i);
+                let zeta = [0.1, 1.0, 3.0][usize::from(i % 3)];
+                (Spring::from_natural_frequency(omega, zeta).unwrap(), i % 3)
+            })
+            .collect();
+        let mut table = TransitionTable::default();
+        for (spring, clock) in &slots {
+            table.request(spring, *clock);
+        }
+        table.finish(slots.len());
+        let frames = [
+            FrameSteps::each(1.0 / 60.0, 1.0 / 144.0, 1.0 / 30.0),
+            // Within every anchor's reach (below a tenth of the step).
+            FrameSteps::each(1.0 / 60.0 * 1.001, 1.0 / 144.0 * 0.999, 1.0 / 30.0 * 1.002),
+            FrameSteps::each(1.0 / 60.0 * 1.001, 1.0 / 144.0 * 0.999, 1.0 / 30.0 * 1.002),
+            // Only the real clock's step changes, and far.
+            FrameSteps::each(1.0 / 60.0 * 1.001, 0.25, 1.0 / 30.0 * 1.002),
+        ];
+        let mut before: Vec<[u32; 4]> = Vec::new();
+        for (frame, steps) in frames.into_iter().enumerate() {
+            table.prepare(steps);
+            let worst = worst_prepared_error(&table, &slots, steps);
+            assert!(worst < 8.0, "frame {frame}: {worst} u");
+            let now: Vec<[u32; 4]> = (0..11)
+                .map(|i| table.increments(i).unwrap().map(f32::to_bits))
+                .collect();
+            if frame == 2 {
+                assert_eq!(now, before, "the same steps keep the increments");
+            }
+            if frame == 3 {
+                for (i, (_, clock)) in slots.iter().enumerate() {
+                    assert_eq!(now[i] == before[i], *clock != 1, "slot {i}");
+                }
+            }
+            before = now;
+        }
     }
 }
