@@ -120,8 +120,17 @@ pub trait SpringSpace: Send + Sync + 'static {
     /// what the step computes with, a SIMD type where one helps (`Vec3A` for `Vec3` values).
     type Offset: SpringVector;
     /// The type velocities and impulses are read in: usually the offset's, but the value's own
-    /// vector type where the offset is a SIMD stand-in for it (`Vec3`, not `Vec3A`).
-    type Velocity: Copy + PartialEq + core::fmt::Debug + From<Self::Offset> + Into<Self::Offset>;
+    /// vector type where the offset is a SIMD stand-in for it (`Vec3`, not `Vec3A`). A spring
+    /// stores its target velocity in this type (the narrower one keeps the component small).
+    type Velocity: Copy
+        + PartialEq
+        + core::fmt::Debug
+        + Send
+        + Sync
+        + Reflectable
+        + FromReflect
+        + From<Self::Offset>
+        + Into<Self::Offset>;
 
     /// Whether `value` can be a target (finite, and for a rotation of non-zero length).
     #[must_use]

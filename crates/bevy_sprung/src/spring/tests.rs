@@ -314,3 +314,15 @@ fn settle_after_the_last_retarget(
         );
     }
 }
+
+/// Every awake spring's component is streamed through each frame: a translation spring (whose
+/// offsets are 16-byte `Vec3A`s) stays within 128 bytes, two cache lines. Stored as a `Vec3A`,
+/// the target velocity alone made it 144 (measured 3–4% slower a frame with 1M springs).
+#[test]
+fn a_translation_spring_is_two_cache_lines() {
+    assert!(
+        size_of::<TranslationSpring>() <= 128,
+        "{} bytes",
+        size_of::<TranslationSpring>()
+    );
+}

@@ -231,7 +231,7 @@ impl<P: SpringProperty> PropertySpring<P> {
             self.motion.pending = 0.0;
             self.motion.rest_squared = super::rest_squared::<P>(self.rest, target);
             self.velocity = OffsetOf::<P>::ZERO;
-            let outcome = if self.target_velocity == OffsetOf::<P>::ZERO {
+            let outcome = if self.target_rate() == OffsetOf::<P>::ZERO {
                 Stepped::Settled
             } else {
                 Stepped::Moving
@@ -263,7 +263,7 @@ impl<P: SpringProperty> PropertySpring<P> {
             & (dt > 0.0)
             & (self.motion.pending == 0.0)
             & (self.target == self.motion.active_target)
-            & (self.target_velocity == OffsetOf::<P>::ZERO);
+            & (self.target_rate() == OffsetOf::<P>::ZERO);
         if !usual {
             return None;
         }
@@ -366,11 +366,11 @@ impl<P: SpringProperty> PropertySpring<P> {
             warn_once!("bevy_sprung: a spring's velocity is not finite; it is reset to zero");
             self.velocity = OffsetOf::<P>::ZERO;
         }
-        if !self.target_velocity.is_finite() {
+        if !self.target_rate().is_finite() {
             warn_once!(
                 "bevy_sprung: a spring's target velocity is not finite; it is reset to zero"
             );
-            self.target_velocity = OffsetOf::<P>::ZERO;
+            self.target_velocity = OffsetOf::<P>::ZERO.into();
         }
         if !(self.motion.offset.offset.is_finite() && self.motion.offset.remainder.is_finite()) {
             self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
@@ -403,7 +403,7 @@ impl<P: SpringProperty> PropertySpring<P> {
             // Unreachable: `repair` made the parameters valid.
             return (offset, velocity);
         };
-        let rate = self.target_velocity;
+        let rate = self.target_rate();
         let step = |y: Carried<OffsetOf<P>>, v, r| {
             let (after, v) = if r == OffsetOf::<P>::ZERO {
                 increment_step(transition, y, v)
@@ -441,7 +441,7 @@ impl<P: SpringProperty> PropertySpring<P> {
         let target = self.target;
         let (offset_tolerance, speed_tolerance) = self.motion.rest_squared;
         let zero = OffsetOf::<P>::ZERO;
-        let (value, offset, velocity, outcome) = if self.target_velocity == zero
+        let (value, offset, velocity, outcome) = if self.target_rate() == zero
             && offset_squared <= offset_tolerance
             && speed_squared <= speed_tolerance
         {
