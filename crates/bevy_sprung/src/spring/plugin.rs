@@ -5,7 +5,7 @@ use core::marker::PhantomData;
 
 use bevy::app::AnimationSystems;
 use bevy::ecs::intern::Interned;
-use bevy::ecs::schedule::{ScheduleLabel, SystemSet};
+use bevy::ecs::schedule::{ScheduleLabel, SingleThreadedExecutor, SystemSet};
 use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
@@ -227,7 +227,14 @@ impl Plugin for SpringSchedulePlugin {
             ready: Vec::new(),
             in_use: Vec::new(),
         });
-        app.init_schedule(SpringUpdate).add_systems(
+        // Every system in it runs after the one before (properties in order, each property's
+        // systems chained): the single-threaded executor runs them without handing each to a
+        // task.
+        app.init_schedule(SpringUpdate)
+            .edit_schedule(SpringUpdate, |schedule| {
+                schedule.set_executor(SingleThreadedExecutor::new());
+            })
+            .add_systems(
             self.schedule,
             run_spring_update
                 .in_set(SpringSystems)
