@@ -66,11 +66,11 @@ use crate::transform::TransformSpringPlugin;
 ///     .update();
 /// ```
 /// Each table's springs are then split into chunks, a few per thread. On this crate's two-core
-/// benchmark machine, 100 000 moving springs stepped 1.8–2.2× faster with two compute threads
-/// than with Bevy's default one, and a whole frame of a million springs 1.7× faster. Each spring
-/// steps independently (the same result on any number of threads), so the split should keep
-/// scaling with cores until memory bandwidth, not arithmetic, bounds the step: the spring and
-/// its `Transform` are about 200 bytes per entity per frame.
+/// benchmark machine, 100 000 moving springs stepped 1.65–2.2× faster with two compute threads
+/// than with Bevy's default one (across runs), and a whole frame of a million springs 1.65–1.7×
+/// faster. Each spring steps independently (the same result on any number of threads), so the
+/// split should keep scaling with cores until memory bandwidth, not arithmetic, bounds the step:
+/// the spring and its `Transform` are about 180 bytes per entity per frame.
 #[derive(Debug, Clone)]
 pub struct SpringPlugin {
     /// The schedule the springs step in: `PostUpdate` by default, `FixedUpdate` for
