@@ -235,11 +235,11 @@ impl Plugin for SpringSchedulePlugin {
                 schedule.set_executor(SingleThreadedExecutor::new());
             })
             .add_systems(
-            self.schedule,
-            run_spring_update
-                .in_set(SpringSystems)
-                .run_if(any_property_in_use),
-        );
+                self.schedule,
+                run_spring_update
+                    .in_set(SpringSystems)
+                    .run_if(any_property_in_use),
+            );
         if self.schedule == PostUpdate.intern() {
             app.configure_sets(
                 PostUpdate,
