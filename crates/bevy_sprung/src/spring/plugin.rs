@@ -35,7 +35,11 @@ pub struct SpringSystems;
 ///
 /// The runner is an exclusive system, as Bevy's fixed-timestep loop is: no other system of the
 /// outer schedule runs beside it while the springs step (they step on the compute pool's
-/// threads themselves).
+/// threads themselves). The schedule runs on Bevy's single-threaded executor: its systems run
+/// one after another in any case (properties in order, each property's systems chained), and
+/// handing each to a task cost more than the systems of a scene at rest (a frame of 100 000
+/// sleeping springs took 40 µs on the multi-threaded executor, 12 µs on this one). Systems of
+/// your own added here run on the calling thread too; `par_iter` still uses the compute pool.
 ///
 /// # Example
 /// ```
