@@ -559,4 +559,47 @@ mod tests {
             before = now;
         }
     }
+
+    /// A table that is collected (more than twice as many slots as springs) starts over: its
+    /// generation moves on, no spring finds its old slot, and the slots made next fill the
+    /// lanes from the first again, each prepared for its own spring.
+    #[test]
+    fn a_collected_table_starts_its_lanes_over() {
+        let springs = |count: u16, base: f32| -> Vec<(Spring<f32>, u8)> {
+            (0..count)
+                .map(|i| {
+                    let omega = base + f32::from(i);
+                    (Spring::from_natural_frequency(omega, 0.8).unwrap(), 2)
+                })
+                .collect()
+        };
+        let mut table = TransitionTable::default();
+        let first = springs(70, 5.0);
+        for (spring, clock) in &first {
+            table.request(spring, *clock);
+        }
+        table.finish(first.len());
+        let steps = FrameSteps::all(1.0 / 60.0);
+        table.prepare(steps);
+        assert!(worst_prepared_error(&table, &first, steps) < 8.0);
+        let generation = table.generation();
+        table.finish(0);
+        assert_ne!(table.generation(), generation);
+        assert!(
+            first
+                .iter()
+                .all(|(spring, clock)| table.lookup(spring, *clock).is_none())
+        );
+        let second = springs(5, 300.0);
+        for (spring, clock) in &second {
+            table.request(spring, *clock);
+        }
+        table.finish(second.len());
+        for dt in [1.0 / 60.0, 1.0 / 60.0 * 1.0005] {
+            let steps = FrameSteps::all(dt);
+            table.prepare(steps);
+            let worst = worst_prepared_error(&table, &second, steps);
+            assert!(worst < 8.0, "{worst} u");
+        }
+    }
 }
