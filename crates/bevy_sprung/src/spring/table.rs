@@ -429,19 +429,29 @@ mod tests {
         within.test(lane).then(|| rows.map(|row| row[lane]))
     }
 
-    /// The worst error of an extended increment matrix against the exact one (computed in
-    /// `f64` for the same `f32` parameters), in units of `f32`'s roundoff relative to each
-    /// entry: over springs from nearly undamped to heavily over-damped, slow to stiff, at frame
+    /// The worst error of the increment matrix `got` against `spring`'s exact one over `dt`
+    /// (computed in `f64` for the same `f32` parameters), in units of `f32`'s roundoff
+    /// relative to each entry.
+    fn error_in_u(got: [f32; 4], spring: Spring<f32>, dt: f64) -> f64 {
+        let unit = f64::from(f32::EPSILON) / 2.0;
+        let [[e00, e01], [e10, e11]] = Spring::<f64>::from(spring)
+            .transition(dt)
+            .increment_matrix();
+        got.into_iter()
+            .zip([e00, e01, e10, e11])
+            .map(|(got, want)| (f64::from(got) - want).abs() / (unit * want.abs()))
+            .fold(0.0, f64::max)
+    }
+
+    /// The worst [`error_in_u`] of an extended increment matrix: over springs from nearly undamped to heavily over-damped, slow to stiff, at frame
     /// rates from 30 to 360 fps, time steps across the anchor's reach on both sides, and every
     /// lane.
     fn worst_extension_error() -> f64 {
-        let unit = f64::from(f32::EPSILON) / 2.0;
         let mut worst = 0.0_f64;
         let mut lane = 0;
         for omega in [0.1_f32, 1.0, 8.0, 40.0, 300.0, 2000.0] {
             for zeta in [0.02_f32, 0.3, 1.0, 1.0001, 4.0, 60.0] {
                 let spring = Spring::from_natural_frequency(omega, zeta).unwrap();
-                let exact = Spring::<f64>::from(spring);
                 for fps in [30.0_f32, 60.0, 144.0, 360.0] {
                     let dt = 1.0 / fps;
                     let anchor = Anchor::new(&spring, dt, &spring.transition(dt));
@@ -450,12 +460,7 @@ mod tests {
                         let step = dt + fraction * anchor.reach;
                         lane = (lane + 1) % 4;
                         let extended = extend(&anchor, step, lane).unwrap();
-                        let [[e00, e01], [e10, e11]] =
-                            exact.transition(f64::from(step)).increment_matrix();
-                        for (got, want) in extended.into_iter().zip([e00, e01, e10, e11]) {
-                            let error = (f64::from(got) - want).abs() / (unit * want.abs());
-                            worst = worst.max(error);
-                        }
+                        worst = worst.max(error_in_u(extended, spring, f64::from(step)));
                     }
                 }
             }
@@ -489,27 +494,19 @@ mod tests {
         }
     }
 
-    /// The worst error, in `u` relative to each entry, of every slot's prepared increments
-    /// against the exact ones (in `f64`) over its clock's step in `steps`.
+    /// The worst [`error_in_u`] of every slot's prepared increments over its clock's step in
+    /// `steps`.
     fn worst_prepared_error(
         table: &TransitionTable,
         slots: &[(Spring<f32>, u8)],
         steps: FrameSteps,
     ) -> f64 {
-        let unit = f64::from(f32::EPSILON) / 2.0;
         let mut worst = 0.0_f64;
         for (index, (spring, clock)) in (0_u32..).zip(slots) {
             let slot = table.lookup(spring, *clock).unwrap();
             assert_eq!(slot, index, "slots are made in the order asked for");
             let got = table.increments(slot).unwrap();
-            let dt = f64::from(steps.of(*clock));
-            let [[e00, e01], [e10, e11]] = Spring::<f64>::from(*spring)
-                .transition(dt)
-                .increment_matrix();
-            for (got, want) in got.into_iter().zip([e00, e01, e10, e11]) {
-                let error = (f64::from(got) - want).abs() / (unit * want.abs());
-                worst = worst.max(error);
-            }
+            worst = worst.max(error_in_u(got, *spring, f64::from(steps.of(*clock))));
         }
         worst
     }
