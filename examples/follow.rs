@@ -120,9 +120,9 @@ fn steer(
 }
 
 /// Turn to face the direction of travel (while moving noticeably).
-fn face_travel(mut ship: Single<(&TranslationSpring, &mut RotationSpring), With<Ship>>) {
-    let (position, rotation) = &mut *ship;
-    let velocity = position.velocity().truncate();
+fn face_travel(mut ship: Single<(&SpringMotion<Translation>, &mut RotationSpring), With<Ship>>) {
+    let (motion, rotation) = &mut *ship;
+    let velocity = motion.velocity().truncate();
     if velocity.length() > 40.0 {
         let heading = Quat::from_rotation_z(velocity.to_angle());
         if rotation.target() != heading {
@@ -133,9 +133,17 @@ fn face_travel(mut ship: Single<(&TranslationSpring, &mut RotationSpring), With<
 
 fn draw(
     mut gizmos: Gizmos,
-    mut ship: Single<(&Transform, &TranslationSpring, &mut Trail), With<Ship>>,
+    mut ship: Single<
+        (
+            &Transform,
+            &TranslationSpring,
+            &SpringMotion<Translation>,
+            &mut Trail,
+        ),
+        With<Ship>,
+    >,
 ) {
-    let (transform, spring, trail) = &mut *ship;
+    let (transform, spring, motion, trail) = &mut *ship;
     trail.0.push(transform.translation.truncate());
     if trail.0.len() > 90 {
         trail.0.remove(0);
@@ -150,7 +158,7 @@ fn draw(
     let from = transform.translation.truncate();
     gizmos.arrow_2d(
         from,
-        from + spring.velocity().truncate() * 0.15,
+        from + motion.velocity().truncate() * 0.15,
         Color::srgb(0.9, 0.4, 0.5),
     );
 }

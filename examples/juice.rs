@@ -797,16 +797,21 @@ fn land(
     time: Res<Time>,
     mut hop: ResMut<Hop>,
     character: Single<
-        (&mut Transform, &mut TranslationSpring, &mut SquashStretch),
+        (
+            &mut Transform,
+            &mut TranslationSpring,
+            &SpringMotion<Translation>,
+            &mut SquashStretch,
+        ),
         With<Character>,
     >,
 ) {
-    let (mut transform, mut spring, mut squash) = character.into_inner();
+    let (mut transform, mut spring, motion, mut squash) = character.into_inner();
     if hop.phase != HopPhase::Falling || transform.translation.y > FLOOR {
         return;
     }
     hop.phase = HopPhase::Grounded;
-    let velocity = spring.velocity();
+    let velocity = motion.velocity();
     transform.translation.y = FLOOR;
     spring.set_target(Vec3::new(hop.x, FLOOR, CHARACTER_Z));
     spring.set_velocity(Vec3::new(velocity.x, 0.0, 0.0));

@@ -47,12 +47,12 @@ fn a_hidden_spring_catches_up_to_the_every_frame_state_when_seen() {
     assert!(a.distance(b) < 1e-4 * a.length(), "{a} vs {b}");
     let va = app
         .world()
-        .get::<TranslationSpring>(every_frame)
+        .get::<SpringMotion<Translation>>(every_frame)
         .unwrap()
         .velocity();
     let vb = app
         .world()
-        .get::<TranslationSpring>(hidden)
+        .get::<SpringMotion<Translation>>(hidden)
         .unwrap()
         .velocity();
     assert!(

@@ -7,7 +7,7 @@ use bevy::prelude::*;
 use bevy_sprung::choreography::SequencePhase;
 use bevy_sprung::prelude::*;
 
-use crate::harness::{app, elapsed, run, targets_visited, translation, translation_spring};
+use crate::harness::{app, elapsed, motion, run, targets_visited, translation, translation_spring};
 
 /// What happened, in order: `(seconds, what)`.
 #[derive(Resource, Clone, Default)]
@@ -139,13 +139,13 @@ fn a_timed_step_moves_on_after_its_time_with_the_velocity_kept() {
         .id();
     let mut switched_at = None;
     for _ in 0..100 {
-        let velocity_before = translation_spring(&app, entity).velocity();
+        let velocity_before = motion::<Translation>(&app, entity).velocity();
         app.update();
         if switched_at.is_none() && translation_spring(&app, entity).target() == Vec3::Y * 100.0 {
             switched_at = Some(elapsed(&app));
             // Still moving along +x: the new target bent the motion, it did not restart it.
             assert!(velocity_before.x > 10.0);
-            assert!(translation_spring(&app, entity).velocity().x > 0.5 * velocity_before.x);
+            assert!(motion::<Translation>(&app, entity).velocity().x > 0.5 * velocity_before.x);
         }
     }
     let switched_at = switched_at.expect("the timed step moved on");
@@ -294,7 +294,7 @@ fn an_interruption_cancels_or_pauses_and_keeps_the_velocity() {
     let cancelled = spawn(&mut app, OnInterrupt::Cancel);
     let paused = spawn(&mut app, OnInterrupt::Pause);
     run(&mut app, 12);
-    let before = translation_spring(&app, cancelled).velocity();
+    let before = motion::<Translation>(&app, cancelled).velocity();
     assert!(before.x > 10.0);
     for entity in [cancelled, paused] {
         app.world_mut()
@@ -304,7 +304,7 @@ fn an_interruption_cancels_or_pauses_and_keeps_the_velocity() {
     }
     app.update();
     // The interrupting target stands, and the motion carries on from the same velocity.
-    let after = translation_spring(&app, cancelled).velocity();
+    let after = motion::<Translation>(&app, cancelled).velocity();
     assert!(after.x > 0.5 * before.x, "{before} → {after}");
     for entity in [cancelled, paused] {
         assert_eq!(

@@ -5,6 +5,7 @@ use std::time::Duration;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
+use bevy_sprung::property::SpringProperty;
 use sprung::SpringState;
 
 /// A headless app with the spring plugin, advancing `1/fps` seconds per update. Like every
@@ -83,4 +84,9 @@ pub(crate) fn exact(spring: &Spring, from: f32, to: f32, seconds: f64) -> Spring
     sprung::Spring::<f64>::from(*spring)
         .transition(seconds)
         .step(SpringState::new(f64::from(from), 0.0), f64::from(to))
+}
+
+/// The motion of the entity's spring on property `P`.
+pub(crate) fn motion<P: SpringProperty>(app: &App, entity: Entity) -> SpringMotion<P> {
+    *app.world().get::<SpringMotion<P>>(entity).unwrap()
 }

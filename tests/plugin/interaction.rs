@@ -15,10 +15,10 @@ use bevy_sprung::interaction::{
 };
 use bevy_sprung::prelude::*;
 use bevy_sprung::transform::Scale;
-use bevy_sprung::ui::UiTranslationSpring;
+use bevy_sprung::ui::{UiTransformTranslation, UiTranslationSpring};
 use sprung::SpringState;
 
-use crate::harness::{app, run};
+use crate::harness::{app, motion, run};
 
 fn location(position: Vec2) -> Location {
     Location {
@@ -239,7 +239,7 @@ fn state_changes_keep_the_velocity() {
     let spring = *app.world().get::<ScaleSpring>(button).unwrap();
     let (x, v) = (
         app.world().get::<Transform>(button).unwrap().scale.x,
-        spring.velocity().x,
+        motion::<Scale>(&app, button).velocity().x,
     );
     assert!(v.abs() > 0.1, "still moving: {v}");
     release(&mut app, button);
@@ -344,7 +344,21 @@ fn fling_snaps_to_the_slot_nearest_the_throw() {
         assert_eq!(released.target, slots[slot]);
         let spring = *app.world().get::<UiTranslationSpring>(card).unwrap();
         assert_eq!(spring.target(), Val2::px(slots[slot].x, slots[slot].y));
-        assert_eq!(spring.velocity(), released.velocity.truncate());
+        // The next frame is the exact step from the release, with the pointer's velocity.
+        let start = ui_position(&app, card);
+        run(&mut app, 1);
+        let transition = sprung::Spring::<f64>::from(*spring.spring()).transition(1.0 / 60.0);
+        let velocity = motion::<UiTransformTranslation>(&app, card).velocity();
+        for axis in 0..2 {
+            let exact = transition.step(
+                SpringState::new(f64::from(start[axis]), f64::from(released.velocity[axis])),
+                f64::from(slots[slot][axis]),
+            );
+            assert!(
+                (f64::from(velocity[axis]) - exact.velocity).abs() < 1e-4 * f64::from(speed),
+                "axis {axis}: {velocity} vs {exact:?}"
+            );
+        }
         run(&mut app, 300);
         assert_eq!(ui_position(&app, card), slots[slot].truncate());
     }

@@ -4,9 +4,7 @@ use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 use sprung::SpringState;
 
-use crate::harness::{
-    app, asleep, elapsed, exact, run, spawn_translation, translation, translation_spring,
-};
+use crate::harness::{app, asleep, elapsed, exact, motion, run, spawn_translation, translation};
 
 #[test]
 fn reaches_and_settles_exactly_on_its_target() {
@@ -24,7 +22,7 @@ fn reaches_and_settles_exactly_on_its_target() {
     assert!(asleep::<Translation>(&app, entity));
     // Snapped: exactly the target, exactly at rest.
     assert_eq!(translation(&app, entity), target);
-    assert_eq!(translation_spring(&app, entity).velocity(), Vec3::ZERO);
+    assert_eq!(motion::<Translation>(&app, entity).velocity(), Vec3::ZERO);
 }
 
 #[test]
@@ -55,7 +53,7 @@ fn same_motion_at_30_60_and_144_fps() {
         // The first update has dt = 0; then `fps` frames make one second.
         run(&mut app, fps + 1);
         let seconds = elapsed(&app);
-        let state = translation_spring(&app, entity);
+        let state = motion::<Translation>(&app, entity);
         let x = translation(&app, entity);
         let expected = exact(&spring, 0.0, 100.0, seconds);
         assert!((seconds - 1.0).abs() < 1e-6, "{fps} fps: {seconds} s");
@@ -88,7 +86,7 @@ fn retargeting_mid_flight_keeps_the_velocity() {
     let mut app = app(60);
     let entity = spawn_translation(&mut app, spring, Vec3::ZERO, Vec3::new(100.0, 0.0, 0.0));
     run(&mut app, 8);
-    let before = translation_spring(&app, entity).velocity();
+    let before = motion::<Translation>(&app, entity).velocity();
     let position = translation(&app, entity);
     assert!(before.x > 100.0, "should be moving fast: {before}");
     let new_target = Vec3::new(0.0, 80.0, 0.0);
@@ -97,7 +95,7 @@ fn retargeting_mid_flight_keeps_the_velocity() {
         .unwrap()
         .set_target(new_target);
     app.update();
-    let after = translation_spring(&app, entity).velocity();
+    let after = motion::<Translation>(&app, entity).velocity();
     let dt = 1.0 / 60.0;
     let step = spring
         .transition(dt)

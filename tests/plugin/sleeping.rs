@@ -9,24 +9,32 @@ use crate::harness::{app, asleep, run, spawn_translation, translation};
 #[derive(Resource, Default)]
 struct ChangedTransforms(Vec<Entity>);
 
-/// Entities whose translation spring component changed since the last frame.
+/// Entities whose translation spring was stepped since the last frame (its motion changed).
 #[derive(Resource, Default)]
 struct ChangedSprings(Vec<Entity>);
+
+/// Entities whose translation spring's configuration changed since the last frame.
+#[derive(Resource, Default)]
+struct ChangedConfigurations(Vec<Entity>);
 
 fn record_changes(
     mut transforms: ResMut<ChangedTransforms>,
     mut springs: ResMut<ChangedSprings>,
+    mut configurations: ResMut<ChangedConfigurations>,
     changed: Query<Entity, Changed<Transform>>,
-    changed_springs: Query<Entity, Changed<TranslationSpring>>,
+    changed_springs: Query<Entity, Changed<SpringMotion<Translation>>>,
+    changed_configurations: Query<Entity, Changed<TranslationSpring>>,
 ) {
     transforms.0 = changed.iter().collect();
     springs.0 = changed_springs.iter().collect();
+    configurations.0 = changed_configurations.iter().collect();
 }
 
 fn recording_app() -> App {
     let mut app = app(60);
     app.init_resource::<ChangedTransforms>()
         .init_resource::<ChangedSprings>()
+        .init_resource::<ChangedConfigurations>()
         .add_systems(PostUpdate, record_changes.after(SpringSystems));
     app
 }
@@ -49,6 +57,12 @@ fn a_sleeping_spring_writes_nothing_and_is_not_iterated() {
         );
         assert!(!springs.contains(&resting), "a sleeping spring was stepped");
         assert!(transforms.contains(&moving) && springs.contains(&moving));
+        // Stepping reads the configuration; only its owner's changes mark it.
+        let configurations = &app.world().resource::<ChangedConfigurations>().0;
+        assert!(
+            configurations.is_empty(),
+            "stepping marked {configurations:?}"
+        );
     }
     assert_eq!(translation(&app, resting), Vec3::X);
 }

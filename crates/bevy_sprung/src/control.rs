@@ -21,8 +21,6 @@ pub trait SpringControl<P: SpringProperty>: Component<Mutability = Mutable> {
     fn set_rest_threshold(&mut self, rest: RestThreshold<f32>);
     /// Adds to the velocity (a non-finite impulse is refused).
     fn kick(&mut self, impulse: OffsetOf<P>);
-    /// The velocity, in the offset's space.
-    fn offset_velocity(&self) -> OffsetOf<P>;
     /// The clock the spring advances with (`None`: the default clock).
     fn clock(&self) -> Option<SpringClock>;
 }

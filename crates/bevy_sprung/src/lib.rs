@@ -144,8 +144,8 @@ pub mod prelude {
     pub use crate::space::{Linear, NeverThroughZero, ShortestAngle, ShortestArc};
     pub use crate::spin::{Spin, SpinSpring};
     pub use crate::spring::{
-        PropertySpring, SpringAsleep, SpringPropertyPlugin, SpringSettled, SpringSystems,
-        SpringTargetMut,
+        PropertySpring, SpringAsleep, SpringMotion, SpringPropertyPlugin, SpringSettled,
+        SpringSystems, SpringTargetMut,
     };
     pub use crate::spring_property;
     pub use crate::transform::{

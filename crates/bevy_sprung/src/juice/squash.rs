@@ -5,7 +5,8 @@ use bevy::prelude::*;
 use sprung::Spring;
 
 use super::JuiceSystems;
-use crate::transform::TranslationSpring;
+use crate::spring::SpringMotion;
+use crate::transform::Translation;
 
 /// What a [`SquashStretch`] keeps while it deforms.
 #[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
@@ -25,7 +26,8 @@ pub enum Conserve {
 /// area), and returns to rest through its own spring: the classic cartoon deformation, as one
 /// component.
 ///
-/// The velocity is the entity's [`TranslationSpring`]'s when it has one, otherwise how far its
+/// The velocity is the entity's [`TranslationSpring`](crate::transform::TranslationSpring)'s
+/// (its [`SpringMotion`]'s) when it has one, otherwise how far its
 /// `GlobalTransform` moved over the last frame (anything that moves it: physics, a parent). The
 /// stretch it asks for is `1 + stretch_per_speed·speed`, at most `max_stretch`, along the
 /// velocity in the entity's local axes; the deformation springs toward that with `spring`, so
@@ -187,18 +189,18 @@ fn squash_and_stretch(
         &mut SquashStretch,
         &mut Transform,
         &GlobalTransform,
-        Option<&TranslationSpring>,
+        Option<&SpringMotion<Translation>>,
     )>,
 ) {
     let dt = time.delta_secs();
     if !(dt > 0.0 && dt.is_finite()) {
         return;
     }
-    for (mut squash, mut transform, global, spring) in &mut bodies {
+    for (mut squash, mut transform, global, motion) in &mut bodies {
         let squash = squash.bypass_change_detection();
         let position = global.translation();
-        let velocity = match (spring, squash.motion.last_position) {
-            (Some(spring), _) => spring.velocity(),
+        let velocity = match (motion, squash.motion.last_position) {
+            (Some(motion), _) => motion.velocity(),
             (None, Some(last)) => (position - last) / dt,
             (None, None) => Vec3::ZERO,
         };

@@ -32,6 +32,11 @@ use crate::space::{Carried, SpringSpace, SpringVector};
 /// snaps onto the target, triggers [`SpringSettled<P>`](super::SpringSettled) once, and sleeps:
 /// it is not iterated and writes nothing until the target changes or it is kicked.
 ///
+/// This component is the spring's configuration; its motion (the velocity, read with
+/// [`SpringMotion::velocity`], and what it carries from frame to frame) is the required
+/// [`SpringMotion<P>`] beside it. The plugin steps the motion every frame and reads this
+/// component only in frames where something changed it.
+///
 /// It starts from wherever the property is, and reads it every frame: something else may move
 /// the property (a teleport, a drag) and the spring goes on from there. Between its own writes
 /// it keeps the digits of the offset that the property cannot hold, so it arrives at any
@@ -68,21 +73,21 @@ use crate::space::{Carried, SpringSpace, SpringVector};
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]
-#[component(on_add)]
+#[component(on_add, on_insert)]
+#[require(SpringMotion<P>)]
 #[reflect(Component, Debug, Clone)]
 pub struct PropertySpring<P: SpringProperty> {
     spring: Spring<f32>,
     target: ValueOf<P>,
-    velocity: OffsetOf<P>,
-    /// Kept as the getters return it: in the narrower type (a `Vec3`, not a `Vec3A`), the
-    /// component is 16 bytes smaller (128 bytes for a translation), and every spring steps
-    /// through its component each frame. Read only off the usual path.
+    /// Kept as the getters return it (a `Vec3`, not a `Vec3A`): read only off the usual path.
     target_velocity: VelocityOf<P>,
     rest: RestThreshold<f32>,
     clock: Option<SpringClock>,
-    /// What the spring carries between frames; not part of its configuration.
+    /// A velocity set or impulse added since the spring last stepped, applied by its next step
+    /// (the velocity itself is [`SpringMotion`]'s, which the per-frame step reads instead of
+    /// this component).
     #[reflect(ignore)]
-    motion: Motion<P>,
+    velocity_change: VelocityChange<P>,
 }
 
 impl<P: SpringProperty> PropertySpring<P> {
@@ -90,37 +95,150 @@ impl<P: SpringProperty> PropertySpring<P> {
     fn on_add(mut world: DeferredWorld, _: HookContext) {
         super::plugin::spring_added(&mut world, TypeId::of::<P>());
     }
+
+    /// The component hook: a spring inserted (or replaced) starts from rest toward its target,
+    /// as its [`SpringMotion`] says; a velocity it was given applies at its first step.
+    fn on_insert(mut world: DeferredWorld, context: HookContext) {
+        let Some(&spring) = world.get::<Self>(context.entity) else {
+            return;
+        };
+        if let Some(mut motion) = world.get_mut::<SpringMotion<P>>(context.entity) {
+            *motion = SpringMotion::toward(spring.target, spring.rest);
+        }
+    }
 }
 
-/// The state a spring carries between its steps.
-struct Motion<P: SpringProperty> {
+/// A change to a spring's velocity that waits for its next step.
+struct VelocityChange<P: SpringProperty> {
+    /// The velocity is replaced by `change` (else `change` is added to it).
+    replace: bool,
+    /// The velocity set, or the sum of the impulses added since; in the narrower velocity type
+    /// (a `Vec3`, not a `Vec3A`), which keeps a translation's configuration to 64 bytes.
+    change: VelocityOf<P>,
+}
+
+impl<P: SpringProperty> VelocityChange<P> {
+    /// The velocity replaced by `change`, or `change` added to it.
+    fn new(replace: bool, change: OffsetOf<P>) -> Self {
+        Self {
+            replace,
+            change: change.into(),
+        }
+    }
+
+    /// The change, in the offset's space.
+    #[inline]
+    fn change(&self) -> OffsetOf<P> {
+        self.change.into()
+    }
+
+    /// Whether there is a change to apply.
+    #[inline]
+    fn is_pending(&self) -> bool {
+        self.replace | (self.change() != OffsetOf::<P>::ZERO)
+    }
+
+    /// `velocity` after the change.
+    #[inline]
+    fn applied_to(&self, velocity: OffsetOf<P>) -> OffsetOf<P> {
+        if self.replace {
+            self.change()
+        } else {
+            velocity + self.change()
+        }
+    }
+}
+
+impl<P: SpringProperty> Default for VelocityChange<P> {
+    fn default() -> Self {
+        Self::new(false, OffsetOf::<P>::ZERO)
+    }
+}
+
+impl<P: SpringProperty> Clone for VelocityChange<P> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<P: SpringProperty> Copy for VelocityChange<P> {}
+
+impl<P: SpringProperty> fmt::Debug for VelocityChange<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("VelocityChange")
+            .field("replace", &self.replace)
+            .field("change", &self.change)
+            .finish()
+    }
+}
+
+/// The motion of the spring on property `P`: its velocity, and the state it carries from frame
+/// to frame. Every [`PropertySpring<P>`] has one (a required component), which the plugin
+/// steps; the spring's configuration is not read while nothing changes it.
+///
+/// Configuration and motion live in two components so that the per-frame step streams only
+/// what moves (80 bytes for a translation) and not the parameters, tolerances and clock
+/// beside it. Set or kick the velocity through the spring
+/// ([`PropertySpring::set_velocity`], [`add_impulse`](PropertySpring::add_impulse)): the
+/// change applies at its next step.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// // A squash that follows how fast each sprung entity moves.
+/// fn speeds(springs: Query<&SpringMotion<Translation>>) {
+///     for motion in &springs {
+///         let _speed = motion.velocity().length();
+///     }
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Update, speeds);
+/// # app.world_mut().spawn((Transform::default(), TranslationSpring::new(Spring::bouncy(), Vec3::X)));
+/// # app.update();
+/// ```
+#[derive(Component, Reflect)]
+#[reflect(Component, Default, Debug, Clone)]
+pub struct SpringMotion<P: SpringProperty> {
+    /// The velocity in the offset's space.
+    velocity: OffsetOf<P>,
     /// The target the spring moved toward in its last step: a `target` that differs was set
-    /// since (a retarget), and a hidden spring catches up under this one first.
+    /// since (a retarget), and a hidden spring catches up under this one first. While nothing
+    /// but the stepping system touches the spring, it is the spring's target.
+    #[reflect(ignore)]
     active_target: ValueOf<P>,
     /// The offset of the value from `active_target` after the last step, with the digits the
     /// value itself cannot hold, and those the offset cannot.
+    #[reflect(ignore)]
     offset: Carried<OffsetOf<P>>,
     /// Time not yet simulated while hidden, in seconds.
+    #[reflect(ignore)]
     pending: f32,
     /// The squared offset and speed tolerances as applied at `active_target` (raised to what
     /// `f32` resolves there): the rest test is two comparisons.
+    #[reflect(ignore)]
     rest_squared: (f32, f32),
     /// The spring's slot in its property's transition table, valid in table generation
     /// `generation` (`u32::MAX`: none). While nothing but the stepping system touches the
     /// spring, its transition is one indexed load.
+    #[reflect(ignore)]
     slot: u32,
+    #[reflect(ignore)]
     generation: u32,
 }
 
-impl<P: SpringProperty> Default for Motion<P> {
+impl<P: SpringProperty> Default for SpringMotion<P> {
     fn default() -> Self {
-        Self::new(ValueOf::<P>::default(), P::DEFAULT_REST)
+        Self::toward(ValueOf::<P>::default(), P::DEFAULT_REST)
     }
 }
 
-impl<P: SpringProperty> Motion<P> {
-    fn new(target: ValueOf<P>, rest: RestThreshold<f32>) -> Self {
+impl<P: SpringProperty> SpringMotion<P> {
+    /// At rest toward `target`, with tolerances `rest`.
+    pub(crate) fn toward(target: ValueOf<P>, rest: RestThreshold<f32>) -> Self {
         Self {
+            velocity: OffsetOf::<P>::ZERO,
             active_target: target,
             offset: Carried::new(OffsetOf::<P>::ZERO),
             pending: 0.0,
@@ -128,6 +246,35 @@ impl<P: SpringProperty> Motion<P> {
             slot: u32::MAX,
             generation: TransitionTable::NO_GENERATION,
         }
+    }
+
+    /// The velocity in the spring's space (units per second; for a rotation, the rate of the
+    /// rotation vector relative to the target, in rad/s), as of the spring's last step. A
+    /// velocity set or kicked since applies at the next step.
+    #[inline]
+    #[must_use]
+    pub fn velocity(&self) -> VelocityOf<P> {
+        self.velocity.into()
+    }
+}
+
+impl<P: SpringProperty> Clone for SpringMotion<P> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<P: SpringProperty> Copy for SpringMotion<P> {}
+
+impl<P: SpringProperty> fmt::Debug for SpringMotion<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("SpringMotion")
+            .field("property", &P::short_type_path())
+            .field("velocity", &self.velocity)
+            .field("active_target", &self.active_target)
+            .field("offset", &self.offset)
+            .field("pending", &self.pending)
+            .finish_non_exhaustive()
     }
 }
 
@@ -155,14 +302,6 @@ fn rest_squared<P: SpringProperty>(rest: RestThreshold<f32>, target: ValueOf<P>)
     };
     (square(applied.offset), square(applied.speed))
 }
-
-impl<P: SpringProperty> Clone for Motion<P> {
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-
-impl<P: SpringProperty> Copy for Motion<P> {}
 
 impl<P: SpringProperty> Clone for PropertySpring<P> {
     fn clone(&self) -> Self {
@@ -199,7 +338,7 @@ impl<P: SpringProperty> fmt::Debug for PropertySpring<P> {
             .field("property", &P::short_type_path())
             .field("spring", &self.spring)
             .field("target", &self.target)
-            .field("velocity", &self.velocity)
+            .field("velocity_change", &self.velocity_change)
             .field("target_velocity", &self.target_velocity)
             .field("rest", &self.rest)
             .field("clock", &self.clock)
@@ -217,11 +356,10 @@ impl<P: SpringProperty> PropertySpring<P> {
         Self {
             spring,
             target,
-            velocity: OffsetOf::<P>::ZERO,
             target_velocity: OffsetOf::<P>::ZERO.into(),
             rest: P::DEFAULT_REST,
             clock: None,
-            motion: Motion::new(target, P::DEFAULT_REST),
+            velocity_change: VelocityChange::default(),
         }
     }
 
@@ -241,7 +379,8 @@ impl<P: SpringProperty> PropertySpring<P> {
         self
     }
 
-    /// The same spring starting with `velocity` (refused with a warning if not finite).
+    /// The same spring starting with `velocity` (refused with a warning if not finite), from
+    /// its first step.
     #[must_use]
     pub fn with_velocity(mut self, velocity: impl Into<OffsetOf<P>>) -> Self {
         self.set_velocity(velocity);
@@ -293,16 +432,10 @@ impl<P: SpringProperty> PropertySpring<P> {
         }
     }
 
-    /// The velocity in the spring's space (units per second; for a rotation, the rate of the
-    /// rotation vector relative to the target, in rad/s).
-    #[inline]
-    #[must_use]
-    pub fn velocity(&self) -> VelocityOf<P> {
-        self.velocity.into()
-    }
-
-    /// Sets the velocity; wakes the spring. A non-finite velocity is refused with one warning
-    /// and nothing changes.
+    /// Sets the velocity, from the spring's next step (the velocity it has is its
+    /// [`SpringMotion::velocity`]); wakes the spring. A non-finite velocity is refused with one
+    /// warning and nothing changes. It replaces any impulse added since the last step; impulses
+    /// added after it add to it.
     #[inline]
     pub fn set_velocity(&mut self, velocity: impl Into<OffsetOf<P>>) {
         let _refused = self.try_set_velocity(velocity);
@@ -316,13 +449,15 @@ impl<P: SpringProperty> PropertySpring<P> {
         &mut self,
         velocity: impl Into<OffsetOf<P>>,
     ) -> Result<(), SpringInputError> {
-        self.velocity = finite_velocity(velocity.into(), "velocity")?;
+        self.velocity_change =
+            VelocityChange::new(true, finite_velocity(velocity.into(), "velocity")?);
         Ok(())
     }
 
-    /// Adds `velocity_change` to the velocity (a kick, a punch); wakes the spring. A non-finite
-    /// impulse, or one that would make the velocity infinite, is refused with one warning and
-    /// nothing changes.
+    /// Adds `velocity_change` to the velocity (a kick, a punch) at the spring's next step; wakes
+    /// the spring. A non-finite impulse, or one that would make the impulses added since the
+    /// last step sum to infinity, is refused with one warning and nothing changes; one that
+    /// would make the velocity itself infinite is refused (with one warning) when applied.
     #[inline]
     pub fn add_impulse(&mut self, velocity_change: impl Into<OffsetOf<P>>) {
         let _refused = self.try_add_impulse(velocity_change);
@@ -337,8 +472,11 @@ impl<P: SpringProperty> PropertySpring<P> {
         velocity_change: impl Into<OffsetOf<P>>,
     ) -> Result<(), SpringInputError> {
         let velocity_change = finite_velocity(velocity_change.into(), "impulse")?;
-        self.velocity =
-            finite_velocity(self.velocity + velocity_change, "velocity after an impulse")?;
+        let sum = finite_velocity(
+            self.velocity_change.change() + velocity_change,
+            "sum of impulses",
+        )?;
+        self.velocity_change = VelocityChange::new(self.velocity_change.replace, sum);
         Ok(())
     }
 
@@ -384,7 +522,6 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     pub fn set_rest(&mut self, rest: RestThreshold<f32>) {
         self.rest = rest;
-        self.motion.rest_squared = rest_squared::<P>(rest, self.motion.active_target);
     }
 
     /// The clock the spring advances with, if it overrides the default.
@@ -400,13 +537,13 @@ impl<P: SpringProperty> PropertySpring<P> {
         self.clock = clock;
     }
 
-    /// Whether the spring has something to do: a target other than where it rests, a velocity,
-    /// or a moving target.
+    /// Whether the spring with `motion` has something to do: a target other than where it
+    /// rests, a velocity (or a change to it), or a moving target.
     #[inline]
-    #[must_use]
-    pub fn wants_to_move(&self) -> bool {
-        self.target != self.motion.active_target
-            || self.velocity != OffsetOf::<P>::ZERO
+    pub(crate) fn wants_to_move(&self, motion: &SpringMotion<P>) -> bool {
+        self.target != motion.active_target
+            || motion.velocity != OffsetOf::<P>::ZERO
+            || self.velocity_change.is_pending()
             || self.target_rate() != OffsetOf::<P>::ZERO
     }
 
@@ -441,11 +578,6 @@ impl<P: SpringProperty> SpringControl<P> for PropertySpring<P> {
     #[inline]
     fn kick(&mut self, impulse: OffsetOf<P>) {
         self.add_impulse(impulse);
-    }
-
-    #[inline]
-    fn offset_velocity(&self) -> OffsetOf<P> {
-        self.velocity
     }
 
     #[inline]
@@ -552,11 +684,12 @@ mod serde_impls {
     //! clock. Everything read is validated as the setters would; an invalid value is an error
     //! that names it.
 
+    use bevy::math::VectorSpace;
     use serde::de::{self, Deserializer};
     use serde::{Deserialize, Serialize, Serializer};
     use sprung::{RestThreshold, Spring};
 
-    use super::{Motion, PropertySpring};
+    use super::{PropertySpring, VelocityChange};
     use crate::clock::SpringClock;
     use crate::property::{OffsetOf, SpringProperty, ValueOf};
     use crate::space::{SpringSpace, SpringVector};
@@ -602,7 +735,8 @@ mod serde_impls {
     struct Written<'a, V, O> {
         spring: &'a Spring<f32>,
         target: &'a V,
-        velocity: &'a O,
+        #[serde(skip_serializing_if = "Option::is_none", serialize_with = "plain")]
+        velocity: Option<O>,
         target_velocity: &'a O,
         rest: &'a RestThreshold<f32>,
         #[serde(skip_serializing_if = "Option::is_none", serialize_with = "plain")]
@@ -624,9 +758,10 @@ mod serde_impls {
         }
     }
 
-    /// Writes `(spring, target, velocity, target_velocity, rest[, clock])`; the spring's
-    /// carried state is not configuration and is not written (a spring read back starts from
-    /// wherever its property is).
+    /// Writes `(spring, target[, velocity], target_velocity, rest[, clock])`, `velocity` if one
+    /// was set that the spring has not yet applied (a starting velocity); its motion
+    /// ([`SpringMotion`](super::SpringMotion)) is not configuration and is not written (a
+    /// spring read back starts from wherever its property is).
     impl<P: SpringProperty> Serialize for PropertySpring<P>
     where
         ValueOf<P>: Serialize,
@@ -637,7 +772,10 @@ mod serde_impls {
             Written {
                 spring: &self.spring,
                 target: &self.target,
-                velocity: &self.velocity,
+                velocity: self
+                    .velocity_change
+                    .replace
+                    .then(|| self.velocity_change.change()),
                 target_velocity: &target_velocity,
                 rest: &self.rest,
                 clock: self.clock,
@@ -665,8 +803,10 @@ mod serde_impls {
             }
             let mut spring = Self::new(read.spring, read.target);
             let mut target_velocity = spring.target_rate();
+            let starts_moving = read.velocity.0.is_some();
+            let mut velocity = OffsetOf::<P>::ZERO;
             for (name, given, field) in [
-                ("velocity", read.velocity, &mut spring.velocity),
+                ("velocity", read.velocity, &mut velocity),
                 (
                     "target_velocity",
                     read.target_velocity,
@@ -683,8 +823,8 @@ mod serde_impls {
                 }
             }
             spring.target_velocity = target_velocity.into();
+            spring.velocity_change = VelocityChange::new(starts_moving, velocity);
             spring.clock = read.clock.0;
-            spring.motion = Motion::new(read.target, spring.rest);
             if let Given(Some(rest)) = read.rest {
                 spring.set_rest(rest);
             }

@@ -10,7 +10,9 @@ mod table;
 #[cfg(test)]
 mod tests;
 
-pub use component::{PropertySpring, SpringAsleep, SpringInputError, SpringTargetMut};
+pub use component::{
+    PropertySpring, SpringAsleep, SpringInputError, SpringMotion, SpringTargetMut,
+};
 pub use event::SpringSettled;
 pub use plugin::{
     PropertySystems, SpringPropertyPlugin, SpringSchedulePlugin, SpringSystems, SpringUpdate,

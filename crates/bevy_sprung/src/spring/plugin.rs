@@ -10,7 +10,7 @@ use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 
-use super::component::{PropertySpring, SpringAsleep};
+use super::component::{PropertySpring, SpringAsleep, SpringMotion};
 use super::systems::{step_springs, wake_springs};
 use crate::choreography::{SpringGroup, SpringSequence, drive_sequences, note_awake};
 use crate::clock::SpringClockPlugin;
@@ -303,6 +303,7 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
             .last_property
             .replace(PropertySystems::<P>::default().intern());
         app.register_type::<PropertySpring<P>>()
+            .register_type::<SpringMotion<P>>()
             .register_type::<SpringAsleep<P>>()
             .register_type::<SpringSequence<P>>();
         #[cfg(feature = "picking")]

@@ -8,7 +8,7 @@ use bevy::tasks::ComputeTaskPool;
 use bevy::utils::Parallel;
 
 use super::cache::TransitionCache;
-use super::component::{PropertySpring, SpringAsleep, Stepped, UsualStep};
+use super::component::{PropertySpring, SpringAsleep, SpringMotion, Stepped, UsualStep};
 use super::event::SpringSettled;
 use super::table::{TransitionTable, compute_threads};
 use crate::choreography::{SettleTracker, SpringGroup};
@@ -43,13 +43,19 @@ pub(crate) fn step_springs<P: SpringProperty>(
     mut table: Local<TransitionTable>,
     caches: Local<Parallel<TransitionCache>>,
     mut springs: Query<
-        (Entity, &mut PropertySpring<P>, &mut P::Component),
+        (
+            Entity,
+            &mut PropertySpring<P>,
+            &mut SpringMotion<P>,
+            &mut P::Component,
+        ),
         (Without<SpringAsleep<P>>, Seen),
     >,
     #[cfg(feature = "visibility")] mut catching_up: Query<
         (
             Entity,
             &mut PropertySpring<P>,
+            &mut SpringMotion<P>,
             &mut P::Component,
             Option<&ViewVisibility>,
         ),
@@ -69,13 +75,15 @@ pub(crate) fn step_springs<P: SpringProperty>(
     let preference = reduced_motion.map_or(ReducedMotion::Full, |preference| *preference);
     let mut cache = TransitionCache::default();
     if preference.is_reduced() {
-        for (entity, spring, mut component) in &mut springs {
-            let spring = spring.into_inner();
+        for (entity, mut config, mut motion, mut component) in &mut springs {
+            // The step reads the configuration and changes it only to apply a velocity change
+            // or to repair it: the spring is not changed by being stepped.
+            let config = config.bypass_change_detection();
             let current = P::get(&component);
             let frame = if exempt.contains(entity) {
-                spring.step(current, steps, false, false, (table, &mut cache))
+                motion.step(config, current, steps, false, false, (table, &mut cache))
             } else {
-                spring.step_reduced(current, steps, preference, (table, &mut cache))
+                motion.step_reduced(config, current, steps, preference, (table, &mut cache))
             };
             if let Some(value) = frame.write {
                 P::set(&mut component, value);
@@ -96,9 +104,9 @@ pub(crate) fn step_springs<P: SpringProperty>(
     if let Ok(tables) = springs.contiguous_iter_mut() {
         // Each table's columns as slices, the step inlined into a plain loop over them, change
         // ticks read and written directly; on the compute pool's threads if it has several.
-        for (entities, springs, components) in tables {
+        for (entities, configs, motions, components) in tables {
             step_table(
-                (entities, springs, components),
+                (entities, configs, motions, components),
                 (steps, shared, caches, &commands),
                 threads,
             );
@@ -115,9 +123,10 @@ pub(crate) fn step_springs<P: SpringProperty>(
     }
     // Springs that may skip frames while nobody sees them (`ViewVisibility` lags a frame).
     #[cfg(feature = "visibility")]
-    for (entity, mut spring, mut component, visibility) in &mut catching_up {
+    for (entity, mut config, mut motion, mut component, visibility) in &mut catching_up {
         let hidden = visibility.is_some_and(|visibility| !visibility.get());
-        let stepped = spring.step_on(&mut component, steps, hidden, (table, &mut cache));
+        let config = config.bypass_change_detection();
+        let stepped = motion.step_on(config, &mut component, steps, hidden, (table, &mut cache));
         if stepped == Stepped::Settled {
             put_to_sleep::<P>(&commands, entity);
         }
@@ -128,16 +137,21 @@ pub(crate) fn step_springs<P: SpringProperty>(
 /// [`step_row`] for a spring of a query item (a property on a sparse-set component, whose
 /// columns are not contiguous).
 fn step_entity<P: SpringProperty>(
-    (entity, spring, mut component): (Entity, Mut<PropertySpring<P>>, Mut<P::Component>),
+    (entity, mut config, motion, mut component): (
+        Entity,
+        Mut<PropertySpring<P>>,
+        Mut<SpringMotion<P>>,
+        Mut<P::Component>,
+    ),
     (steps, table, caches, commands): StepContext,
 ) {
-    // Changed since this system last ran: by something else than this system, which marks
-    // every spring it steps (a retarget, a kick, an edit through reflection).
-    let untouched = !spring.is_changed();
-    // The spring changes every frame it is stepped; the property only when it moves.
+    // Changed since this system last ran (a retarget, a kick, an edit through reflection): this
+    // system does not mark the configuration changed, it only reads it.
+    let untouched = !config.is_changed();
+    // The motion changes every frame it is stepped; the property only when it moves.
     let moved = step_row(
         || entity,
-        spring.into_inner(),
+        (config.bypass_change_detection(), motion.into_inner()),
         component.bypass_change_detection(),
         untouched,
         (&steps, table, caches, commands),
@@ -159,7 +173,7 @@ fn step_entity<P: SpringProperty>(
 #[inline(always)]
 fn step_row<P: SpringProperty>(
     entity: impl FnOnce() -> Entity,
-    spring: &mut PropertySpring<P>,
+    (config, motion): (&mut PropertySpring<P>, &mut SpringMotion<P>),
     component: &mut P::Component,
     untouched: bool,
     (steps, table, caches, commands): (
@@ -170,7 +184,7 @@ fn step_row<P: SpringProperty>(
     ),
 ) -> bool {
     let current = P::get(component);
-    match spring.step_usual(current, steps, false, untouched, table) {
+    match motion.step_usual(config, current, steps, false, untouched, table) {
         UsualStep::Moved(value) => {
             P::set(component, value);
             true
@@ -178,7 +192,7 @@ fn step_row<P: SpringProperty>(
         UsualStep::Still => false,
         UsualStep::Declined => step_entity_unusual(
             entity(),
-            spring,
+            (config, motion),
             component,
             (*steps, table, caches),
             commands,
@@ -200,38 +214,41 @@ const STEP_CHUNK: usize = 2048;
 
 /// The awake, visible springs of one table, from its columns: [`step_entity`] for each, without
 /// the per-entity `Mut` wrappers, in chunks on the compute pool's `threads` if there are several.
-/// Every spring is marked changed (it was stepped), a property only where it moved.
+/// Every motion is marked changed (it was stepped), a property only where it moved; the
+/// configurations are read where they changed, and not marked.
 fn step_table<P: SpringProperty>(
-    (entities, springs, components): (
+    (entities, configs, motions, components): (
         &[Entity],
         ContiguousMut<PropertySpring<P>>,
+        ContiguousMut<SpringMotion<P>>,
         ContiguousMut<P::Component>,
     ),
     context: StepContext,
     threads: usize,
 ) {
-    let (springs, mut spring_ticks) = ContiguousMut::bypass_change_detection_split(springs);
+    let (configs, config_ticks) = ContiguousMut::bypass_change_detection_split(configs);
+    let (motions, mut motion_ticks) = ContiguousMut::bypass_change_detection_split(motions);
     let (components, mut component_ticks) =
         ContiguousMut::bypass_change_detection_split(components);
-    let ticks = (spring_ticks.last_run(), spring_ticks.this_run());
-    let spring_changed = spring_ticks.changed();
+    let ticks = (config_ticks.last_run(), config_ticks.this_run());
+    let config_changed = config_ticks.changed();
     let component_changed = component_ticks.changed_mut();
     // Chunks that give every thread a few, so that one slow chunk does not hold up the rest.
     // (A pool of no threads runs its tasks on this one.)
-    let chunk = (springs.len() / (4 * threads.max(1))).max(STEP_CHUNK);
-    if threads > 1 && springs.len() > chunk {
+    let chunk = (motions.len() / (4 * threads.max(1))).max(STEP_CHUNK);
+    if threads > 1 && motions.len() > chunk {
         ComputeTaskPool::get().scope(|scope| {
             let chunks = entities
                 .chunks(chunk)
-                .zip(springs.chunks_mut(chunk))
+                .zip(configs.chunks_mut(chunk).zip(motions.chunks_mut(chunk)))
                 .zip(components.chunks_mut(chunk))
-                .zip(spring_changed.chunks(chunk))
+                .zip(config_changed.chunks(chunk))
                 .zip(component_changed.chunks_mut(chunk));
-            for ((((entities, springs), components), spring_changed), component_changed) in chunks {
+            for ((((entities, springs), components), config_changed), component_changed) in chunks {
                 scope.spawn(async move {
                     step_rows(
                         (entities, springs, components),
-                        (spring_changed, component_changed, ticks),
+                        (config_changed, component_changed, ticks),
                         context,
                     );
                 });
@@ -239,12 +256,12 @@ fn step_table<P: SpringProperty>(
         });
     } else {
         step_rows(
-            (entities, springs, components),
-            (spring_changed, component_changed, ticks),
+            (entities, (configs, motions), components),
+            (config_changed, component_changed, ticks),
             context,
         );
     }
-    spring_ticks.mark_all_as_changed();
+    motion_ticks.mark_all_as_changed();
     mark_changed_by(&mut component_ticks);
 }
 
@@ -252,21 +269,27 @@ fn step_table<P: SpringProperty>(
 /// the last run was touched by something else), the properties' written where they moved.
 #[inline(never)]
 fn step_rows<P: SpringProperty>(
-    (entities, springs, components): (&[Entity], &mut [PropertySpring<P>], &mut [P::Component]),
-    (spring_changed, component_changed, (last_run, this_run)): (&[Tick], &mut [Tick], (Tick, Tick)),
+    (entities, (configs, springs), components): (
+        &[Entity],
+        (&mut [PropertySpring<P>], &mut [SpringMotion<P>]),
+        &mut [P::Component],
+    ),
+    (config_changed, component_changed, (last_run, this_run)): (&[Tick], &mut [Tick], (Tick, Tick)),
     (steps, table, caches, commands): StepContext,
 ) {
-    let rows = springs
+    let rows = configs
         .iter_mut()
+        .zip(springs.iter_mut())
         .zip(components.iter_mut())
-        .zip(spring_changed.iter().zip(component_changed));
-    for (row, ((spring, component), (spring_changed, component_changed))) in rows.enumerate() {
-        // Changed since this system last ran: by something else than this system (see
-        // `step_entity`).
-        let untouched = !spring_changed.is_newer_than(last_run, this_run);
+        .zip(config_changed.iter().zip(component_changed));
+    for (row, (((config, spring), component), (config_changed, component_changed))) in
+        rows.enumerate()
+    {
+        // The configuration changed since this system last ran (see `step_entity`).
+        let untouched = !config_changed.is_newer_than(last_run, this_run);
         if step_row(
             || entities[row],
-            spring,
+            (config, spring),
             component,
             untouched,
             (&steps, table, caches, commands),
@@ -309,7 +332,7 @@ fn mark_changed_by(ticks: &mut ContiguousComponentTicksMut) {
 #[inline(never)]
 fn step_entity_unusual<P: SpringProperty>(
     entity: Entity,
-    spring: &mut PropertySpring<P>,
+    (config, motion): (&mut PropertySpring<P>, &mut SpringMotion<P>),
     component: &mut P::Component,
     (steps, table, caches): (FrameSteps, &TransitionTable, &Parallel<TransitionCache>),
     commands: &ParallelCommands,
@@ -317,7 +340,8 @@ fn step_entity_unusual<P: SpringProperty>(
     // Read again rather than passed: as an argument, the value would leave the vector
     // registers on the usual path too.
     let current = P::get(component);
-    let frame = spring.step_unusual(
+    let frame = motion.step_unusual(
+        config,
         current,
         steps,
         false,
@@ -353,10 +377,18 @@ fn put_to_sleep<P: SpringProperty>(commands: &ParallelCommands, entity: Entity) 
 pub(crate) fn wake_springs<P: SpringProperty>(
     mut commands: Commands,
     mut tracker: Option<ResMut<SettleTracker>>,
-    asleep: Query<(Entity, Ref<PropertySpring<P>>, Has<SpringGroup>), With<SpringAsleep<P>>>,
+    asleep: Query<
+        (
+            Entity,
+            Ref<PropertySpring<P>>,
+            &SpringMotion<P>,
+            Has<SpringGroup>,
+        ),
+        With<SpringAsleep<P>>,
+    >,
 ) {
-    let mut wake = |entity: Entity, spring: &PropertySpring<P>, grouped: bool| {
-        if spring.wants_to_move() {
+    let mut wake = |entity: Entity, spring: &PropertySpring<P>, motion, grouped: bool| {
+        if spring.wants_to_move(motion) {
             commands.entity(entity).try_remove::<SpringAsleep<P>>();
             // Woken (perhaps to settle again this very frame): its group hears of it.
             if grouped && let Some(tracker) = tracker.as_mut() {
@@ -366,28 +398,29 @@ pub(crate) fn wake_springs<P: SpringProperty>(
     };
     let Ok(tables) = asleep.contiguous_iter() else {
         // Not reached (the components are in tables): the same, spring by spring.
-        for (entity, spring, grouped) in &asleep {
+        for (entity, spring, motion, grouped) in &asleep {
             if spring.is_changed() {
-                wake(entity, &spring, grouped);
+                wake(entity, &spring, motion, grouped);
             }
         }
         return;
     };
-    for (entities, springs, grouped) in tables {
+    for (entities, springs, motions, grouped) in tables {
         let (springs, ticks) = ContiguousRef::split(springs);
         let (last_run, this_run) = (ticks.last_run(), ticks.this_run());
         let blocks = ticks
             .changed()
             .chunks(WAKE_BLOCK)
-            .zip(springs.chunks(WAKE_BLOCK))
+            .zip(springs.chunks(WAKE_BLOCK).zip(motions.chunks(WAKE_BLOCK)))
             .zip(entities.chunks(WAKE_BLOCK));
-        for ((changed, springs), entities) in blocks {
+        for ((changed, (springs, motions)), entities) in blocks {
             if !any_newer(changed, last_run, this_run) {
                 continue;
             }
-            for ((tick, spring), &entity) in changed.iter().zip(springs).zip(entities) {
+            let rows = changed.iter().zip(springs).zip(motions).zip(entities);
+            for (((tick, spring), motion), &entity) in rows {
                 if tick.is_newer_than(last_run, this_run) {
-                    wake(entity, spring, grouped);
+                    wake(entity, spring, motion, grouped);
                 }
             }
         }

@@ -12,7 +12,7 @@ use core::ops::DerefMut;
 
 use sprung::{Spring, SpringState, Transition};
 
-use super::PropertySpring;
+use super::{PropertySpring, SpringMotion};
 use crate::clock::FrameSteps;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
 use crate::reduced_motion::ReducedMotion;
@@ -86,28 +86,37 @@ fn moving_step<V: SpringVector>(
     )
 }
 
-impl<P: SpringProperty> PropertySpring<P> {
+impl<P: SpringProperty> SpringMotion<P> {
     /// One frame of the spring over `dt` on a component, writing its property if it changed
     /// (through a `Mut`, a write is a change).
     #[inline]
     #[cfg(any(test, feature = "visibility"))]
     pub(crate) fn step_on<C: DerefMut<Target = P::Component>>(
         &mut self,
+        config: &mut PropertySpring<P>,
         component: &mut C,
         steps: FrameSteps,
         hidden: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Stepped {
-        let frame = self.step(P::get(&**component), steps, hidden, false, (table, cache));
+        let frame = self.step(
+            config,
+            P::get(&**component),
+            steps,
+            hidden,
+            false,
+            (table, cache),
+        );
         if let Some(value) = frame.write {
             P::set(&mut **component, value);
         }
         frame.outcome
     }
 
-    /// One frame of the spring (`hidden`: nobody sees it, defer) from the property's `current`
-    /// value: the new value, only if it changed. `untouched`: nothing but the stepping system
-    /// changed the spring since its last step (Bevy's change ticks say so).
+    /// One frame of the spring configured by `config` (`hidden`: nobody sees it, defer) from
+    /// the property's `current` value: the new value, only if it changed. `untouched`: nothing
+    /// changed `config` since the spring's last step (Bevy's change ticks say so); it is then
+    /// not read.
     ///
     /// The common case — an untouched spring — finds its transition in its slot of the
     /// property's [`TransitionTable`] and is straight-line, a handful of vector instructions. A
@@ -118,13 +127,14 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     pub(crate) fn step(
         &mut self,
+        config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         steps: FrameSteps,
         hidden: bool,
         untouched: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        match self.step_usual(current, &steps, hidden, untouched, table) {
+        match self.step_usual(config, current, &steps, hidden, untouched, table) {
             UsualStep::Moved(value) => Frame {
                 outcome: Stepped::Moving,
                 write: Some(value),
@@ -133,7 +143,9 @@ impl<P: SpringProperty> PropertySpring<P> {
                 outcome: Stepped::Moving,
                 write: None,
             },
-            UsualStep::Declined => self.step_unusual(current, steps, hidden, (table, cache)),
+            UsualStep::Declined => {
+                self.step_unusual(config, current, steps, hidden, (table, cache))
+            }
         }
     }
 
@@ -148,22 +160,25 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline(always)]
     pub(crate) fn step_usual(
         &mut self,
+        config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         steps: &FrameSteps,
         hidden: bool,
         untouched: bool,
         table: &TransitionTable,
     ) -> UsualStep<ValueOf<P>> {
-        let slot = if untouched & !hidden & (self.motion.generation == table.generation()) {
-            Some(self.motion.slot)
+        let slot = if untouched & !hidden & (self.generation == table.generation()) {
+            Some(self.slot)
         } else {
             // The steps by reference: as a value, the loop around copied them for every spring.
-            let clock = FrameSteps::index(self.clock);
-            self.usual_slot(steps.of(clock), clock, hidden, table)
+            let clock = FrameSteps::index(config.clock);
+            self.usual_slot(config, steps.of(clock), clock, hidden, table)
         };
         if let Some([d00, d01, d10, d11]) = slot.and_then(|slot| table.increments(slot)) {
-            let target = self.target;
-            let carried = self.motion.offset;
+            // The spring's target (a usual step is toward the target of the last one): read from
+            // the motion, the configuration is not read at all while nothing changes it.
+            let target = self.active_target;
+            let carried = self.offset;
             let before = if P::Space::is_written(current, target, carried) {
                 carried
             } else {
@@ -175,11 +190,11 @@ impl<P: SpringProperty> PropertySpring<P> {
             // A finite squared length means finite components.
             let (offset_squared, speed_squared) =
                 (after.offset.norm_squared(), velocity.norm_squared());
-            let (offset_tolerance, speed_tolerance) = self.motion.rest_squared;
+            let (offset_tolerance, speed_tolerance) = self.rest_squared;
             let at_rest = (offset_squared <= offset_tolerance) & (speed_squared <= speed_tolerance);
             // A NaN or infinite square makes the sum NaN or infinite.
             if (offset_squared + speed_squared < f32::INFINITY) & !at_rest {
-                self.motion.offset = after;
+                self.offset = after;
                 self.velocity = velocity;
                 let value = P::Space::at_carried(target, after);
                 return if P::Space::same(value, current) {
@@ -198,14 +213,15 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline(never)]
     pub(crate) fn step_unusual(
         &mut self,
+        config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         steps: FrameSteps,
         hidden: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        let dt = steps.dt(self.clock);
-        let frame = self.step_general(current, dt, hidden, (table, cache));
-        self.motion.generation = TransitionTable::NO_GENERATION;
+        let dt = steps.dt(config.clock);
+        let frame = self.step_general(config, current, dt, hidden, (table, cache));
+        self.generation = TransitionTable::NO_GENERATION;
         frame
     }
 
@@ -216,22 +232,23 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline(never)]
     pub(crate) fn step_reduced(
         &mut self,
+        config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         steps: FrameSteps,
         preference: ReducedMotion,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        let dt = steps.dt(self.clock);
-        self.motion.generation = TransitionTable::NO_GENERATION;
+        let dt = steps.dt(config.clock);
+        self.generation = TransitionTable::NO_GENERATION;
         if preference == ReducedMotion::Snap {
-            self.repair(current, table);
-            let target = self.target;
-            self.motion.active_target = target;
-            self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
-            self.motion.pending = 0.0;
-            self.motion.rest_squared = super::rest_squared::<P>(self.rest, target);
+            self.repair(config, current, table);
+            let target = config.target;
+            self.active_target = target;
+            self.offset = Carried::new(OffsetOf::<P>::ZERO);
+            self.pending = 0.0;
+            self.rest_squared = super::rest_squared::<P>(config.rest, target);
             self.velocity = OffsetOf::<P>::ZERO;
-            let outcome = if self.target_rate() == OffsetOf::<P>::ZERO {
+            let outcome = if config.target_rate() == OffsetOf::<P>::ZERO {
                 Stepped::Settled
             } else {
                 Stepped::Moving
@@ -241,10 +258,10 @@ impl<P: SpringProperty> PropertySpring<P> {
                 write: (!P::Space::same(target, current)).then_some(target),
             };
         }
-        let spring = self.spring;
-        self.spring = preference.spring(spring);
-        let frame = self.step_general(current, preference.dt(dt), false, (table, cache));
-        self.spring = spring;
+        let spring = config.spring;
+        config.spring = preference.spring(spring);
+        let frame = self.step_general(config, current, preference.dt(dt), false, (table, cache));
+        config.spring = spring;
         frame
     }
 
@@ -254,6 +271,7 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     fn usual_slot(
         &mut self,
+        config: &mut PropertySpring<P>,
         dt: f32,
         clock: u8,
         hidden: bool,
@@ -261,27 +279,27 @@ impl<P: SpringProperty> PropertySpring<P> {
     ) -> Option<u32> {
         let usual = !hidden
             & (dt > 0.0)
-            & (self.motion.pending == 0.0)
-            & (self.target == self.motion.active_target)
-            & (self.target_rate() == OffsetOf::<P>::ZERO);
+            & (self.pending == 0.0)
+            & (config.target == self.active_target)
+            & (config.target_rate() == OffsetOf::<P>::ZERO)
+            & !config.velocity_change.is_pending();
         if !usual {
             return None;
         }
         // Touched: the tolerances may have changed too (a `rest` set through reflection).
-        self.motion.rest_squared = super::rest_squared::<P>(self.rest, self.target);
-        let (slot, generation) = (self.motion.slot, table.generation());
-        let slot = if self.motion.generation == generation && table.holds(slot, &self.spring, clock)
-        {
+        self.rest_squared = super::rest_squared::<P>(config.rest, config.target);
+        let (slot, generation) = (self.slot, table.generation());
+        let slot = if self.generation == generation && table.holds(slot, &config.spring, clock) {
             slot
-        } else if let Some(slot) = table.lookup(&self.spring, clock) {
+        } else if let Some(slot) = table.lookup(&config.spring, clock) {
             slot
         } else {
             // New parameters: stepped the general way this frame, from its slot the next.
-            table.request(&self.spring, clock);
+            table.request(&config.spring, clock);
             return None;
         };
-        self.motion.slot = slot;
-        self.motion.generation = generation;
+        self.slot = slot;
+        self.generation = generation;
         Some(slot)
     }
 
@@ -290,25 +308,26 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline(never)]
     fn step_general(
         &mut self,
+        config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         dt: f32,
         hidden: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        self.repair(current, table);
-        let target = self.target;
-        let retargeted = target != self.motion.active_target;
+        self.repair(config, current, table);
+        let target = config.target;
+        let retargeted = target != self.active_target;
         if hidden && !retargeted {
-            self.motion.pending += dt;
+            self.pending += dt;
             return Frame {
                 outcome: Stepped::Deferred,
                 write: None,
             };
         }
-        let active = self.motion.active_target;
+        let active = self.active_target;
         // A property something made invalid (a NaN written into a `Transform`) is overwritten
         // from the spring's own state.
-        let carried = self.motion.offset;
+        let carried = self.offset;
         let mut offset =
             if !P::Space::is_valid(current) || P::Space::is_written(current, active, carried) {
                 carried
@@ -322,35 +341,41 @@ impl<P: SpringProperty> PropertySpring<P> {
         }
         let mut velocity = self.velocity;
         // Catch up the hidden time under the target that was in effect, then retarget.
-        if self.motion.pending > 0.0 {
-            let pending = core::mem::take(&mut self.motion.pending);
-            (offset, velocity) = self.advance(cache, active, (offset, velocity), pending);
+        if self.pending > 0.0 {
+            let pending = core::mem::take(&mut self.pending);
+            (offset, velocity) = Self::advance(config, cache, active, (offset, velocity), pending);
         }
         if retargeted {
             (offset, velocity) = P::Space::retarget(active, target, offset, velocity);
-            self.motion.active_target = target;
+            self.active_target = target;
         }
         // The tolerances as applied toward this target (and any `rest` reflection wrote).
-        self.motion.rest_squared = super::rest_squared::<P>(self.rest, target);
+        self.rest_squared = super::rest_squared::<P>(config.rest, target);
         if dt > 0.0 {
-            (offset, velocity) = self.advance(cache, target, (offset, velocity), dt);
+            (offset, velocity) = Self::advance(config, cache, target, (offset, velocity), dt);
         }
         let squared = (offset.offset.norm_squared(), velocity.norm_squared());
-        self.finish(current, (offset, velocity), squared)
+        self.finish(config, current, (offset, velocity), squared)
     }
 
     /// Restores a valid state where reflection (an inspector, a scene) wrote an invalid one,
     /// with one warning each: the last valid target, zero velocities, the last valid parameters.
+    /// Then applies the velocity set or kicked through `config` since the last step.
     #[cold]
-    fn repair(&mut self, current: ValueOf<P>, table: &TransitionTable) {
-        if !P::Space::is_valid(self.target) {
+    fn repair(
+        &mut self,
+        config: &mut PropertySpring<P>,
+        current: ValueOf<P>,
+        table: &TransitionTable,
+    ) {
+        if !P::Space::is_valid(config.target) {
             warn_once!(
                 "bevy_sprung: a spring's target is not finite ({:?}); it keeps its last valid \
                  target",
-                self.target
+                config.target
             );
-            let active = self.motion.active_target;
-            self.target = if P::Space::is_valid(active) {
+            let active = self.active_target;
+            config.target = if P::Space::is_valid(active) {
                 active
             } else if P::Space::is_valid(current) {
                 current
@@ -358,32 +383,42 @@ impl<P: SpringProperty> PropertySpring<P> {
                 ValueOf::<P>::default()
             };
             if !P::Space::is_valid(active) {
-                self.motion.active_target = self.target;
-                self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
+                self.active_target = config.target;
+                self.offset = Carried::new(OffsetOf::<P>::ZERO);
             }
         }
         if !self.velocity.is_finite() {
             warn_once!("bevy_sprung: a spring's velocity is not finite; it is reset to zero");
             self.velocity = OffsetOf::<P>::ZERO;
         }
-        if !self.target_rate().is_finite() {
+        // A velocity set or kicked since the last step (each finite, checked when given).
+        let change = core::mem::take(&mut config.velocity_change);
+        let changed = change.applied_to(self.velocity);
+        if changed.is_finite() {
+            self.velocity = changed;
+        } else {
+            warn_once!(
+                "bevy_sprung: refused a spring impulse that would make its velocity infinite"
+            );
+        }
+        if !config.target_rate().is_finite() {
             warn_once!(
                 "bevy_sprung: a spring's target velocity is not finite; it is reset to zero"
             );
-            self.target_velocity = OffsetOf::<P>::ZERO.into();
+            config.target_velocity = OffsetOf::<P>::ZERO.into();
         }
-        if !(self.motion.offset.offset.is_finite() && self.motion.offset.remainder.is_finite()) {
-            self.motion.offset = Carried::new(OffsetOf::<P>::ZERO);
+        if !(self.offset.offset.is_finite() && self.offset.remainder.is_finite()) {
+            self.offset = Carried::new(OffsetOf::<P>::ZERO);
         }
-        let spring = self.spring;
+        let spring = config.spring;
         if Spring::new(spring.mass(), spring.stiffness(), spring.damping()).is_err() {
             warn_once!(
                 "bevy_sprung: a spring has invalid parameters ({spring:?}); it keeps its last \
                  valid ones"
             );
             // Its slot holds the parameters it last stepped with, which were valid.
-            self.spring = table
-                .parameters(self.motion.slot, self.motion.generation)
+            config.spring = table
+                .parameters(self.slot, self.generation)
                 .unwrap_or_default();
         }
     }
@@ -393,17 +428,17 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// down by `2⁶⁴` and scaled back with each component saturated at `±f32::MAX`: the state
     /// stays finite and the spring still comes back.
     fn advance(
-        &self,
+        config: &PropertySpring<P>,
         cache: &mut TransitionCache,
         target: ValueOf<P>,
         (offset, velocity): (Carried<OffsetOf<P>>, OffsetOf<P>),
         dt: f32,
     ) -> (Carried<OffsetOf<P>>, OffsetOf<P>) {
-        let Some(transition) = cache.get(&self.spring, dt) else {
+        let Some(transition) = cache.get(&config.spring, dt) else {
             // Unreachable: `repair` made the parameters valid.
             return (offset, velocity);
         };
-        let rate = self.target_rate();
+        let rate = config.target_rate();
         let step = |y: Carried<OffsetOf<P>>, v, r| {
             let (after, v) = if r == OffsetOf::<P>::ZERO {
                 increment_step(transition, y, v)
@@ -434,14 +469,15 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     fn finish(
         &mut self,
+        config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         (offset, velocity): (Carried<OffsetOf<P>>, OffsetOf<P>),
         (offset_squared, speed_squared): (f32, f32),
     ) -> Frame<ValueOf<P>> {
-        let target = self.target;
-        let (offset_tolerance, speed_tolerance) = self.motion.rest_squared;
+        let target = config.target;
+        let (offset_tolerance, speed_tolerance) = self.rest_squared;
         let zero = OffsetOf::<P>::ZERO;
-        let (value, offset, velocity, outcome) = if self.target_rate() == zero
+        let (value, offset, velocity, outcome) = if config.target_rate() == zero
             && offset_squared <= offset_tolerance
             && speed_squared <= speed_tolerance
         {
@@ -455,7 +491,7 @@ impl<P: SpringProperty> PropertySpring<P> {
                 Stepped::Moving,
             )
         };
-        self.motion.offset = offset;
+        self.offset = offset;
         self.velocity = velocity;
         Frame {
             outcome,
