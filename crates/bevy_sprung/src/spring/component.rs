@@ -219,13 +219,11 @@ pub struct SpringMotion<P: SpringProperty> {
     /// `f32` resolves there): the rest test is two comparisons.
     #[reflect(ignore)]
     rest_squared: (f32, f32),
-    /// The spring's slot in its property's transition table, valid in table generation
-    /// `generation` (`u32::MAX`: none). While nothing but the stepping system touches the
-    /// spring, its transition is one indexed load.
+    /// The ticket of the spring's slot in its property's transition table
+    /// ([`TransitionTable::NO_TICKET`]: none). While nothing but the stepping system touches
+    /// the spring, its transition is one indexed load.
     #[reflect(ignore)]
-    slot: u32,
-    #[reflect(ignore)]
-    generation: u32,
+    ticket: u64,
 }
 
 impl<P: SpringProperty> Default for SpringMotion<P> {
@@ -243,8 +241,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             offset: Carried::new(OffsetOf::<P>::ZERO),
             pending: 0.0,
             rest_squared: rest_squared::<P>(rest, target),
-            slot: u32::MAX,
-            generation: TransitionTable::NO_GENERATION,
+            ticket: TransitionTable::NO_TICKET,
         }
     }
 

@@ -201,7 +201,7 @@ impl Lanes {
     /// new, extended together (inline: a game's time step changes every frame, and this is a
     /// few vector multiply-adds per four slots), or computed exactly where out of reach.
     #[inline]
-    fn prepare(&mut self, increments: &mut [[f32; 4]; 4], slots: &[Slot], steps: FrameSteps) {
+    fn prepare(&mut self, increments: &mut [Vec4; 4], slots: &[Slot], steps: FrameSteps) {
         let [a, b, c, d] = self.clocks;
         let dt = Vec4::new(steps.of(a), steps.of(b), steps.of(c), steps.of(d));
         // The lanes whose increments are for another time step (NaN: none yet).
@@ -213,7 +213,7 @@ impl Lanes {
         if stale.all() & within.all() {
             let by_lane = by_lane(rows);
             for (lane, increments) in increments.iter_mut().enumerate() {
-                *increments = by_lane.col(lane).to_array();
+                *increments = by_lane.col(lane);
             }
             self.prepared = dt;
         } else {
@@ -227,7 +227,7 @@ impl Lanes {
     #[inline(never)]
     fn prepare_lanes(
         &mut self,
-        increments: &mut [[f32; 4]; 4],
+        increments: &mut [Vec4; 4],
         slots: &[Slot],
         (dt, stale, within): (Vec4, BVec4A, BVec4A),
         rows: [Vec4; 4],
@@ -238,12 +238,12 @@ impl Lanes {
                 continue;
             }
             if within.test(lane) {
-                *increments = by_lane.col(lane).to_array();
+                *increments = by_lane.col(lane);
             } else if let Some(slot) = slots.get(lane) {
                 let (spring, dt) = (slot.spring, dt[lane]);
                 let transition = spring.transition(dt);
                 let [[d00, d01], [d10, d11]] = transition.increment_matrix();
-                *increments = [d00, d01, d10, d11];
+                *increments = Vec4::new(d00, d01, d10, d11);
                 self.anchors
                     .set(lane, &Anchor::new(&spring, dt, &transition));
             }
@@ -253,9 +253,9 @@ impl Lanes {
 }
 
 /// The slots of every distinct `(spring, clock)` of one property, kept by its stepping system
-/// across frames. A spring remembers its slot's index (and the table's generation), so that
-/// while nothing touches it, finding its transition is one indexed load, however many springs
-/// the scene has: one shared spring, a handful, or one per entity.
+/// across frames. A spring remembers its slot's ticket, so that while nothing touches it,
+/// finding its transition is one indexed load, however many springs the scene has: one shared
+/// spring, a handful, or one per entity.
 ///
 /// A frame goes: [`prepare`](Self::prepare) makes every slot's increments those of this
 /// frame's time steps (in parallel when the compute pool has threads to spare); the springs
@@ -264,18 +264,22 @@ impl Lanes {
 /// [`finish`](Self::finish) adds the requested slots and collects the table.
 ///
 /// Slots are added when a spring first needs one and never move; when the table has far more
-/// slots than springs (springs despawned or changed), it is cleared and its generation advances,
-/// so every spring finds (or makes) its slot again.
+/// slots than springs (springs despawned or changed), it is cleared, and every spring finds (or
+/// makes) its slot again. A slot's ticket is its index plus the number of slots every earlier
+/// clearing removed: tickets are never reused (a `u64` does not run out), so the one test that
+/// a ticket is in the table's range both finds its slot and refuses a ticket from before a
+/// clearing.
 #[derive(Default)]
 pub(crate) struct TransitionTable {
     slots: Vec<Slot>,
     /// Each slot's increments `D = M − I` over this frame's time step, row-major, by the same
     /// index (16 bytes: all the per-entity step reads), padded to a multiple of four.
-    increments: Vec<[f32; 4]>,
+    increments: Vec<Vec4>,
     /// The slots' preparation state, four slots a lane each.
     lanes: Vec<Lanes>,
     index: HashMap<Key, u32>,
-    generation: u32,
+    /// The ticket of the first slot: the slots every clearing removed, in all.
+    first: u64,
     /// Slots springs asked for this frame, per thread.
     requests: Parallel<Vec<(Key, Spring<f32>)>>,
 }
@@ -289,14 +293,16 @@ pub(crate) fn compute_threads() -> usize {
 const PREPARE_CHUNK: usize = 4096;
 
 impl TransitionTable {
-    /// A generation no table is ever in: what a spring without a slot remembers (generations
-    /// are even).
-    pub(crate) const NO_GENERATION: u32 = 1;
+    /// A ticket no slot ever has: what a spring without a slot remembers.
+    pub(crate) const NO_TICKET: u64 = u64::MAX;
 
-    /// The generation the table is in: a spring's slot index is valid only in its generation.
+    /// The index of the slot with `ticket`, if the table has it.
     #[inline]
-    pub(crate) fn generation(&self) -> u32 {
-        self.generation
+    fn index_of(&self, ticket: u64) -> Option<usize> {
+        // A ticket from before a clearing wraps far past the end (as does `NO_TICKET`).
+        usize::try_from(ticket.wrapping_sub(self.first))
+            .ok()
+            .filter(|&index| index < self.slots.len())
     }
 
     /// Makes every slot's increments those over its clock's time step in `steps`. A frame with
@@ -306,7 +312,7 @@ impl TransitionTable {
     pub(crate) fn prepare(&mut self, steps: FrameSteps) {
         // The steps copied into the closure: captured by reference, a slot cost 4 instructions
         // more (callgrind) where the closure was not inlined.
-        let prepare = move |lanes: &mut [Lanes], increments: &mut [[f32; 4]], slots: &[Slot]| {
+        let prepare = move |lanes: &mut [Lanes], increments: &mut [Vec4], slots: &[Slot]| {
             let (increments, _) = increments.as_chunks_mut::<4>();
             for ((lanes, increments), slots) in
                 lanes.iter_mut().zip(increments).zip(slots.chunks(4))
@@ -330,17 +336,22 @@ impl TransitionTable {
         }
     }
 
-    /// The increments of slot `index` (prepared for this frame), from a spring that remembered
-    /// it in this generation.
+    /// The increments of the slot with `ticket` (prepared for this frame), if the table has
+    /// it: one subtraction and one bounds check find it.
     #[inline]
-    pub(crate) fn increments(&self, index: u32) -> Option<[f32; 4]> {
-        self.increments.get(index as usize).copied()
+    pub(crate) fn increments(&self, ticket: u64) -> Option<Vec4> {
+        // The padding past the last slot holds no ticket's increments, but reading it is
+        // harmless: a ticket past the last slot was never handed out.
+        let index = usize::try_from(ticket.wrapping_sub(self.first)).ok()?;
+        self.increments.get(index).copied()
     }
 
-    /// The index of the slot of `spring` on clock `clock`, if the table has one.
+    /// The ticket of the slot of `spring` on clock `clock`, if the table has one.
     #[inline]
-    pub(crate) fn lookup(&self, spring: &Spring<f32>, clock: u8) -> Option<u32> {
-        self.index.get(&Key::new(spring, clock)).copied()
+    pub(crate) fn lookup(&self, spring: &Spring<f32>, clock: u8) -> Option<u64> {
+        self.index
+            .get(&Key::new(spring, clock))
+            .map(|&index| self.first.wrapping_add(u64::from(index)))
     }
 
     /// Asks for a slot for `spring` on clock `clock`, added when the frame
@@ -370,7 +381,7 @@ impl TransitionTable {
             let lane = self.slots.len() % 4;
             if lane == 0 {
                 self.lanes.push(Lanes::EMPTY);
-                self.increments.extend([[0.0; 4]; 4]);
+                self.increments.extend([Vec4::ZERO; 4]);
             }
             if let Some(lanes) = self.lanes.last_mut() {
                 lanes.clocks[lane] = key.clock;
@@ -383,29 +394,25 @@ impl TransitionTable {
         // The per-thread buffers keep their capacity for the next frame.
         self.requests = requests;
         if self.slots.len() > 2 * springs + 64 {
+            self.first = self.first.wrapping_add(self.slots.len() as u64);
             self.slots.clear();
             self.increments.clear();
             self.lanes.clear();
             self.index.clear();
-            self.generation = self.generation.wrapping_add(2);
         }
     }
 
-    /// The parameters of slot `index` in `generation`, if that is this table's: the last valid
+    /// The parameters of the slot with `ticket`, if the table has it: the last valid
     /// parameters of the spring that remembers it.
-    pub(crate) fn parameters(&self, index: u32, generation: u32) -> Option<Spring<f32>> {
-        self.slots
-            .get(index as usize)
-            .filter(|_| generation == self.generation)
-            .map(|slot| slot.spring)
+    pub(crate) fn parameters(&self, ticket: u64) -> Option<Spring<f32>> {
+        self.index_of(ticket).map(|index| self.slots[index].spring)
     }
 
-    /// Whether `spring` is what slot `index` was made for (after it was touched).
+    /// Whether `spring` is what the slot with `ticket` was made for (after it was touched).
     #[inline]
-    pub(crate) fn holds(&self, index: u32, spring: &Spring<f32>, clock: u8) -> bool {
-        self.slots
-            .get(index as usize)
-            .is_some_and(|slot| slot.key == Key::new(spring, clock))
+    pub(crate) fn holds(&self, ticket: u64, spring: &Spring<f32>, clock: u8) -> bool {
+        self.index_of(ticket)
+            .is_some_and(|index| self.slots[index].key == Key::new(spring, clock))
     }
 }
 
@@ -502,10 +509,17 @@ mod tests {
         steps: FrameSteps,
     ) -> f64 {
         let mut worst = 0.0_f64;
-        for (index, (spring, clock)) in (0_u32..).zip(slots) {
+        let first = slots
+            .first()
+            .and_then(|(spring, clock)| table.lookup(spring, *clock));
+        for (index, (spring, clock)) in (0_u64..).zip(slots) {
             let slot = table.lookup(spring, *clock).unwrap();
-            assert_eq!(slot, index, "slots are made in the order asked for");
-            let got = table.increments(slot).unwrap();
+            assert_eq!(
+                Some(slot - index),
+                first,
+                "slots are made in the order asked for"
+            );
+            let got = table.increments(slot).unwrap().to_array();
             worst = worst.max(error_in_u(got, *spring, f64::from(steps.of(*clock))));
         }
         worst
@@ -543,7 +557,7 @@ mod tests {
             let worst = worst_prepared_error(&table, &slots, steps);
             assert!(worst < 8.0, "frame {frame}: {worst} u");
             let now: Vec<[u32; 4]> = (0..11)
-                .map(|i| table.increments(i).unwrap().map(f32::to_bits))
+                .map(|i| table.increments(i).unwrap().to_array().map(f32::to_bits))
                 .collect();
             if frame == 2 {
                 assert_eq!(now, before, "the same steps keep the increments");
@@ -557,9 +571,10 @@ mod tests {
         }
     }
 
-    /// A table that is collected (more than twice as many slots as springs) starts over: its
-    /// generation moves on, no spring finds its old slot, and the slots made next fill the
-    /// lanes from the first again, each prepared for its own spring.
+    /// A table that is collected (more than twice as many slots as springs) starts over: no
+    /// spring finds its old slot (by key or by ticket), the tickets go on from where they
+    /// were, and the slots made next fill the lanes from the first again, each prepared for its
+    /// own spring.
     #[test]
     fn a_collected_table_starts_its_lanes_over() {
         let springs = |count: u16, base: f32| -> Vec<(Spring<f32>, u8)> {
@@ -579,9 +594,11 @@ mod tests {
         let steps = FrameSteps::all(1.0 / 60.0);
         table.prepare(steps);
         assert!(worst_prepared_error(&table, &first, steps) < 8.0);
-        let generation = table.generation();
+        let tickets: Vec<u64> = first
+            .iter()
+            .map(|(spring, clock)| table.lookup(spring, *clock).unwrap())
+            .collect();
         table.finish(0);
-        assert_ne!(table.generation(), generation);
         assert!(
             first
                 .iter()
@@ -592,6 +609,17 @@ mod tests {
             table.request(spring, *clock);
         }
         table.finish(second.len());
+        let new_tickets: Vec<u64> = second
+            .iter()
+            .map(|(spring, clock)| table.lookup(spring, *clock).unwrap())
+            .collect();
+        assert_eq!(new_tickets, (70..75).collect::<Vec<u64>>());
+        for (ticket, (spring, clock)) in tickets.iter().zip(&first) {
+            assert!(table.increments(*ticket).is_none(), "old ticket {ticket}");
+            assert!(!table.holds(*ticket, spring, *clock));
+            assert!(table.parameters(*ticket).is_none());
+        }
+        assert!(table.increments(TransitionTable::NO_TICKET).is_none());
         for dt in [1.0 / 60.0, 1.0 / 60.0 * 1.0005] {
             let steps = FrameSteps::all(dt);
             table.prepare(steps);

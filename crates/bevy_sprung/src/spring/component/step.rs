@@ -6,7 +6,7 @@
 )]
 
 use bevy::log::warn_once;
-use bevy::math::{NormedVectorSpace, VectorSpace};
+use bevy::math::{NormedVectorSpace, Vec4, VectorSpace};
 #[cfg(any(test, feature = "visibility"))]
 use core::ops::DerefMut;
 
@@ -167,14 +167,20 @@ impl<P: SpringProperty> SpringMotion<P> {
         untouched: bool,
         table: &TransitionTable,
     ) -> UsualStep<ValueOf<P>> {
-        let slot = if untouched & !hidden & (self.generation == table.generation()) {
-            Some(self.slot)
+        // Untouched, the spring's ticket (if the table still has it) finds its transition;
+        // otherwise the step's conditions and the slot are checked.
+        let untouched_increments = if untouched & !hidden {
+            table.increments(self.ticket)
         } else {
-            // The steps by reference: as a value, the loop around copied them for every spring.
-            let clock = FrameSteps::index(config.clock);
-            self.usual_slot(config, steps.of(clock), clock, hidden, table)
+            None
         };
-        if let Some([d00, d01, d10, d11]) = slot.and_then(|slot| table.increments(slot)) {
+        let increments = match untouched_increments {
+            Some(increments) => Some(increments),
+            None => self.touched_increments(config, steps, hidden, table),
+        };
+        if let Some(increments) = increments {
+            // One aligned load, each entry broadcast from it.
+            let [d00, d01, d10, d11] = increments.to_array();
             // The spring's target (a usual step is toward the target of the last one): read from
             // the motion, the configuration is not read at all while nothing changes it.
             let target = self.active_target;
@@ -221,7 +227,7 @@ impl<P: SpringProperty> SpringMotion<P> {
     ) -> Frame<ValueOf<P>> {
         let dt = steps.dt(config.clock);
         let frame = self.step_general(config, current, dt, hidden, (table, cache));
-        self.generation = TransitionTable::NO_GENERATION;
+        self.ticket = TransitionTable::NO_TICKET;
         frame
     }
 
@@ -239,7 +245,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
         let dt = steps.dt(config.clock);
-        self.generation = TransitionTable::NO_GENERATION;
+        self.ticket = TransitionTable::NO_TICKET;
         if preference == ReducedMotion::Snap {
             self.repair(config, current, table);
             let target = config.target;
@@ -265,18 +271,35 @@ impl<P: SpringProperty> SpringMotion<P> {
         frame
     }
 
-    /// The spring's slot if this frame's step is the usual one (a visible spring toward the
-    /// target of its last step, which does not move, with no time pending and the tolerances it
-    /// was set up with), remembered for the frames that follow; `None` otherwise.
+    /// The increments of the spring's slot when its ticket did not find them (it was touched,
+    /// or its table was cleared), if this frame's step is the usual one: out of line, so that
+    /// the per-entity loop stays small.
+    #[cold]
+    #[inline(never)]
+    fn touched_increments(
+        &mut self,
+        config: &PropertySpring<P>,
+        steps: &FrameSteps,
+        hidden: bool,
+        table: &TransitionTable,
+    ) -> Option<Vec4> {
+        let clock = FrameSteps::index(config.clock);
+        let ticket = self.usual_slot(config, steps.of(clock), clock, hidden, table)?;
+        table.increments(ticket)
+    }
+
+    /// The ticket of the spring's slot if this frame's step is the usual one (a visible spring
+    /// toward the target of its last step, which does not move, with no time pending and the
+    /// tolerances it was set up with), remembered for the frames that follow; `None` otherwise.
     #[inline]
     fn usual_slot(
         &mut self,
-        config: &mut PropertySpring<P>,
+        config: &PropertySpring<P>,
         dt: f32,
         clock: u8,
         hidden: bool,
         table: &TransitionTable,
-    ) -> Option<u32> {
+    ) -> Option<u64> {
         let usual = !hidden
             & (dt > 0.0)
             & (self.pending == 0.0)
@@ -288,19 +311,17 @@ impl<P: SpringProperty> SpringMotion<P> {
         }
         // Touched: the tolerances may have changed too (a `rest` set through reflection).
         self.rest_squared = super::rest_squared::<P>(config.rest, config.target);
-        let (slot, generation) = (self.slot, table.generation());
-        let slot = if self.generation == generation && table.holds(slot, &config.spring, clock) {
-            slot
-        } else if let Some(slot) = table.lookup(&config.spring, clock) {
-            slot
+        let ticket = if table.holds(self.ticket, &config.spring, clock) {
+            self.ticket
+        } else if let Some(ticket) = table.lookup(&config.spring, clock) {
+            ticket
         } else {
             // New parameters: stepped the general way this frame, from its slot the next.
             table.request(&config.spring, clock);
             return None;
         };
-        self.slot = slot;
-        self.generation = generation;
-        Some(slot)
+        self.ticket = ticket;
+        Some(ticket)
     }
 
     /// [`step`](Self::step) in every case: retargets, catch-up, moving targets, input written
@@ -417,9 +438,7 @@ impl<P: SpringProperty> SpringMotion<P> {
                  valid ones"
             );
             // Its slot holds the parameters it last stepped with, which were valid.
-            config.spring = table
-                .parameters(self.slot, self.generation)
-                .unwrap_or_default();
+            config.spring = table.parameters(self.ticket).unwrap_or_default();
         }
     }
 
