@@ -196,14 +196,19 @@ impl Lanes {
         },
     };
 
-    /// Makes the increments of the four slots (`increments`, by lane; `slots`: those of them
-    /// that exist) those over their clocks' time steps in `steps`: the lanes whose step is
+    /// Makes the increments of the four slots (`increments`, by lane; `slots`: the slots of
+    /// the lanes' chunk and this block's index in it) those over their clocks' time steps in `steps`: the lanes whose step is
     /// new, extended together (inline: a game's time step changes every frame, and this is a
     /// few vector multiply-adds per four slots), or computed exactly where out of reach.
     #[inline]
-    fn prepare(&mut self, increments: &mut [Vec4; 4], slots: &[Slot], steps: FrameSteps) {
+    fn prepare(&mut self, increments: &mut [Vec4; 4], slots: (&[Slot], usize), steps: FrameSteps) {
         let [a, b, c, d] = self.clocks;
-        let dt = Vec4::new(steps.of(a), steps.of(b), steps.of(c), steps.of(d));
+        // Four slots on one clock (nearly always): one step for all, not four gathered.
+        let dt = if self.clocks == [a; 4] {
+            Vec4::splat(steps.of(a))
+        } else {
+            Vec4::new(steps.of(a), steps.of(b), steps.of(c), steps.of(d))
+        };
         // The lanes whose increments are for another time step (NaN: none yet).
         let stale = dt.cmpne(self.prepared);
         if !stale.any() {
@@ -217,21 +222,23 @@ impl Lanes {
             }
             self.prepared = dt;
         } else {
-            self.prepare_lanes(increments, slots, (dt, stale, within), rows);
+            self.prepare_lanes(increments, slots, (dt, stale));
         }
     }
 
     /// [`prepare`](Self::prepare) lane by lane: the stale lanes within reach take their
-    /// extension, the others a transition computed exactly (and are anchored there).
+    /// extension (computed again here rather than passed, which kept the common path storing
+    /// it), the others a transition computed exactly (and are anchored there).
     #[cold]
     #[inline(never)]
     fn prepare_lanes(
         &mut self,
         increments: &mut [Vec4; 4],
-        slots: &[Slot],
-        (dt, stale, within): (Vec4, BVec4A, BVec4A),
-        rows: [Vec4; 4],
+        (slots, block): (&[Slot], usize),
+        (dt, stale): (Vec4, BVec4A),
     ) {
+        let slots = slots.get(4 * block..).unwrap_or_default();
+        let (rows, within) = self.anchors.increments(dt);
         let by_lane = by_lane(rows);
         for (lane, increments) in increments.iter_mut().enumerate() {
             if !stale.test(lane) {
@@ -314,10 +321,9 @@ impl TransitionTable {
         // more (callgrind) where the closure was not inlined.
         let prepare = move |lanes: &mut [Lanes], increments: &mut [Vec4], slots: &[Slot]| {
             let (increments, _) = increments.as_chunks_mut::<4>();
-            for ((lanes, increments), slots) in
-                lanes.iter_mut().zip(increments).zip(slots.chunks(4))
-            {
-                lanes.prepare(increments, slots, steps);
+            // The slots by block index: only a lane that needs an exact transition reads one.
+            for (block, (lanes, increments)) in lanes.iter_mut().zip(increments).enumerate() {
+                lanes.prepare(increments, (slots, block), steps);
             }
         };
         if compute_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
