@@ -86,6 +86,20 @@ pub(crate) fn exact(spring: &Spring, from: f32, to: f32, seconds: f64) -> Spring
         .step(SpringState::new(f64::from(from), 0.0), f64::from(to))
 }
 
+/// Runs `frames` updates, asserting after each that the translation springs of `a` and `b` are
+/// in the same state, bit for bit: the same translation and the same velocity.
+pub(crate) fn assert_move_alike(app: &mut App, (a, b): (Entity, Entity), frames: u32) {
+    for frame in 0..frames {
+        app.update();
+        assert_eq!(translation(app, a), translation(app, b), "frame {frame}");
+        assert_eq!(
+            motion::<Translation>(app, a).velocity(),
+            motion::<Translation>(app, b).velocity(),
+            "frame {frame}"
+        );
+    }
+}
+
 /// The motion of the entity's spring on property `P`.
 pub(crate) fn motion<P: SpringProperty>(app: &App, entity: Entity) -> SpringMotion<P> {
     *app.world().get::<SpringMotion<P>>(entity).unwrap()

@@ -4,7 +4,7 @@
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 
-use crate::harness::{app, asleep, motion, run, translation};
+use crate::harness::{app, asleep, assert_move_alike, run, translation};
 
 fn round_trip<T>(value: &T) -> T
 where
@@ -26,14 +26,7 @@ fn assert_same_motion(a: TranslationSpring, b: TranslationSpring) {
             ))
             .id()
     });
-    for _ in 0..10 {
-        app.update();
-        assert_eq!(translation(&app, a), translation(&app, b));
-        assert_eq!(
-            motion::<Translation>(&app, a).velocity(),
-            motion::<Translation>(&app, b).velocity()
-        );
-    }
+    assert_move_alike(&mut app, (a, b), 10);
     assert_ne!(translation(&app, a), Vec3::new(3.0, 4.0, 5.0), "it moved");
 }
 

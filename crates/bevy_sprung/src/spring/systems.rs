@@ -244,10 +244,10 @@ fn step_table<P: SpringProperty>(
                 .zip(components.chunks_mut(chunk))
                 .zip(config_changed.chunks(chunk))
                 .zip(component_changed.chunks_mut(chunk));
-            for ((((entities, springs), components), config_changed), component_changed) in chunks {
+            for ((((entities, rows), components), config_changed), component_changed) in chunks {
                 scope.spawn(async move {
                     step_rows(
-                        (entities, springs, components),
+                        (entities, rows, components),
                         (config_changed, component_changed, ticks),
                         context,
                     );
@@ -265,11 +265,11 @@ fn step_table<P: SpringProperty>(
     mark_changed_by(&mut component_ticks);
 }
 
-/// [`step_table`]'s loop over rows: the springs' changed ticks are read (a spring changed since
-/// the last run was touched by something else), the properties' written where they moved.
+/// [`step_table`]'s loop over rows: the configurations' changed ticks are read (one changed
+/// since the last run was touched by something else), the properties' written where they moved.
 #[inline(never)]
 fn step_rows<P: SpringProperty>(
-    (entities, (configs, springs), components): (
+    (entities, (configs, motions), components): (
         &[Entity],
         (&mut [PropertySpring<P>], &mut [SpringMotion<P>]),
         &mut [P::Component],
@@ -279,17 +279,17 @@ fn step_rows<P: SpringProperty>(
 ) {
     let rows = configs
         .iter_mut()
-        .zip(springs.iter_mut())
+        .zip(motions.iter_mut())
         .zip(components.iter_mut())
         .zip(config_changed.iter().zip(component_changed));
-    for (row, (((config, spring), component), (config_changed, component_changed))) in
+    for (row, (((config, motion), component), (config_changed, component_changed))) in
         rows.enumerate()
     {
         // The configuration changed since this system last ran (see `step_entity`).
         let untouched = !config_changed.is_newer_than(last_run, this_run);
         if step_row(
             || entities[row],
-            (config, spring),
+            (config, motion),
             component,
             untouched,
             (&steps, table, caches, commands),
