@@ -54,7 +54,12 @@ fn no_ambiguities_with_the_plugins_systems() {
     let mut app = app(60);
     // A user property on Transform as well: it must be ordered against the built-in ones.
     app.add_plugins(SpringPropertyPlugin::<crate::properties::ScaleX>::default());
-    for label in [PostUpdate.intern(), SpringUpdate.intern()] {
+    let checked = [
+        PreUpdate.intern(),
+        PostUpdate.intern(),
+        SpringUpdate.intern(),
+    ];
+    for label in checked {
         app.edit_schedule(label, |schedule| {
             schedule.set_build_settings(ScheduleBuildSettings {
                 ambiguity_detection: LogLevel::Warn,
@@ -69,11 +74,22 @@ fn no_ambiguities_with_the_plugins_systems() {
         ScaleSpring::new(Spring::snappy(), Vec3::splat(2.0)),
         PropertySpring::<crate::properties::ScaleX>::new(Spring::snappy(), 3.0),
     ));
+    // What brings in the other systems that join with their first component: a group, juice
+    // and a follower.
+    let leader = app.world_mut().spawn(Transform::default()).id();
+    app.world_mut().spawn((
+        Transform::default(),
+        TranslationSpring::new(Spring::snappy(), Vec3::Y),
+        SpringGroup::named("menu"),
+        Shake::new(1),
+        SquashStretch::new(0.01, 1.2),
+        SpringFollow::new(leader, Vec3::ONE),
+    ));
     run(&mut app, 3);
     // The names are there to be matched (Bevy's `debug` feature), so the check is not vacuous.
     assert!(spring_system_runs(&app).len() >= 10);
     let world = app.world();
-    for label in [PostUpdate.intern(), SpringUpdate.intern()] {
+    for label in checked {
         let schedule = world.resource::<Schedules>().get(label).unwrap();
         // Named through the executable schedule: the graph's conflict list may also hold a sync
         // point Bevy has since replaced (its key is gone and `to_string` would panic on it).
@@ -93,14 +109,18 @@ fn no_ambiguities_with_the_plugins_systems() {
     }
 }
 
-/// The schedules the plugin's systems run in: `PreUpdate` (interaction states, shakes taken
-/// off), `PostUpdate` (the spring schedule's runner, choreography, juice) and [`SpringUpdate`]
-/// (the properties' systems).
-fn spring_schedules() -> [Interned<dyn ScheduleLabel>; 3] {
+/// Every schedule the plugin's systems can join: `PreUpdate` (interaction states, shakes taken
+/// off), `FixedPostUpdate` (followers' fixed-step targets), `PostUpdate` (the spring schedule's
+/// runner, choreography, juice), [`SpringUpdate`] (the properties' systems), and `First` and
+/// `Last` (where systems wait for a schedule that was running when they were needed).
+fn spring_schedules() -> [Interned<dyn ScheduleLabel>; 6] {
     [
+        First.intern(),
         PreUpdate.intern(),
+        FixedPostUpdate.intern(),
         PostUpdate.intern(),
         SpringUpdate.intern(),
+        Last.intern(),
     ]
 }
 
@@ -110,42 +130,39 @@ fn spring_system_runs(app: &App) -> Vec<(String, u32)> {
     spring_schedules()
         .into_iter()
         // A schedule that never ran (the spring schedule, before any spring) has no systems.
-        .filter_map(|label| schedules.get(label).unwrap().systems().ok())
+        .filter_map(|label| schedules.get(label)?.systems().ok())
         .flatten()
         .filter(|(_, system)| system.name().to_string().contains("bevy_sprung"))
         .map(|(_, system)| (system.name().to_string(), system.get_last_run().get()))
         .collect()
 }
 
-/// With the plugin and no springs, no property's systems are even in a schedule and none of
-/// the plugin's systems runs (their run conditions skip them); spawning a spring brings in and
-/// runs its property's systems, and only those.
+/// With the plugin and no springs, none of the plugin's systems is in any schedule (nothing
+/// runs, nothing is even skipped); spawning a spring brings in and runs its property's systems
+/// and the spring schedule's runner, and only those.
 #[test]
 fn no_springs_no_work() {
     let mut app = app(60);
     run(&mut app, 2);
-    let idle = spring_system_runs(&app);
-    assert!(idle.len() >= 5, "{idle:?}");
-    let in_spring_update = |app: &App| {
-        let schedules = app.world().resource::<Schedules>();
-        schedules.get(SpringUpdate).unwrap().systems_len()
-    };
-    assert_eq!(
-        in_spring_update(&app),
-        0,
-        "property systems without springs"
+    // The check is not vacuous: Bevy's own systems are found by name in these schedules.
+    let schedules = app.world().resource::<Schedules>();
+    assert!(
+        spring_schedules()
+            .into_iter()
+            .filter_map(|label| schedules.get(label)?.systems().ok())
+            .flatten()
+            .any(|(_, system)| system.name().to_string().contains("bevy_time")),
+        "Bevy's systems are named"
     );
-    run(&mut app, 5);
     assert_eq!(
         spring_system_runs(&app),
-        idle,
-        "a spring system ran without springs"
+        Vec::new(),
+        "systems without springs"
     );
     app.world_mut().spawn((
         Transform::default(),
         TranslationSpring::new(Spring::snappy(), Vec3::X),
     ));
-    // The first frame brings the systems in; which run is seen over the next.
     run(&mut app, 1);
     let before = spring_system_runs(&app);
     run(&mut app, 1);
@@ -169,18 +186,69 @@ fn no_springs_no_work() {
         2,
         "only the translation systems run: {ran:?}"
     );
-    // Only translation's systems (and the followers', which move translation springs) came in.
-    let added: Vec<_> = busy
-        .iter()
-        .filter(|(name, _)| !idle.iter().any(|(idle_name, _)| idle_name == name))
-        .map(|(name, _)| name.as_str())
-        .collect();
-    assert!(in_spring_update(&app) >= 3, "{added:?}");
+    // Only translation's systems (and the followers', which move translation springs) came in,
+    // besides the runner.
+    assert!(busy.len() >= 4, "{busy:?}");
     assert!(
-        added
+        busy.iter().all(|(name, _)| name.contains("Translation")
+            || name.contains("follow")
+            || name.contains("run_spring_update")),
+        "{busy:?}"
+    );
+}
+
+/// A shake added by a system of `PostUpdate`, the schedule its systems join (and which cannot
+/// change while it runs), gets them from the next frame: it shakes, and calms back exactly to
+/// where it was. Systems that waited so are added by one system in `First`, which is then
+/// skipped.
+#[test]
+fn a_first_shake_added_while_its_schedule_runs_shakes_from_the_next_frame() {
+    #[derive(Component)]
+    struct ShakeMe;
+    let mut app = app(60);
+    app.add_systems(
+        PostUpdate,
+        |mut commands: Commands, marked: Query<Entity, With<ShakeMe>>| {
+            for entity in &marked {
+                let mut shake = Shake::new(3).with_max_translation(Vec3::splat(5.0));
+                shake.add_trauma(1.0);
+                commands.entity(entity).remove::<ShakeMe>().insert(shake);
+            }
+        },
+    );
+    let base = Vec3::new(10.0, 20.0, 0.0);
+    let entity = app
+        .world_mut()
+        .spawn((Transform::from_translation(base), ShakeMe))
+        .id();
+    run(&mut app, 1);
+    assert!(
+        app.world().get::<Shake>(entity).is_some(),
+        "the shake was added"
+    );
+    let mut moved = 0.0_f32;
+    for _ in 0..10 {
+        run(&mut app, 1);
+        let translation = app.world().get::<Transform>(entity).unwrap().translation;
+        moved = moved.max(translation.distance(base));
+    }
+    assert!(moved > 0.5, "it shakes: {moved}");
+    let runs = spring_system_runs(&app);
+    let waiting: Vec<_> = runs
+        .iter()
+        .filter(|(name, _)| name.contains("install_waiting_systems"))
+        .collect();
+    assert_eq!(waiting.len(), 1, "{runs:?}");
+    run(&mut app, 300);
+    let transform = app.world().get::<Transform>(entity).unwrap();
+    assert_eq!(transform.translation, base);
+    assert_eq!(transform.rotation, Quat::IDENTITY);
+    assert_eq!(
+        spring_system_runs(&app)
             .iter()
-            .all(|name| name.contains("Translation") || name.contains("follow")),
-        "{added:?}"
+            .find(|(name, _)| name.contains("install_waiting_systems")),
+        waiting.first().copied(),
+        "the installer is skipped once it has nothing to add"
     );
 }
 

@@ -5,7 +5,9 @@ use core::any::TypeId;
 use bevy::prelude::*;
 
 use crate::clock::SpringTime;
-use crate::spring::{PropertySystems, SpringTargetMut, add_property_systems};
+use crate::spring::{
+    PropertySystems, SpringTargetMut, add_property_systems, add_systems_on_first_use,
+};
 use crate::transform::{Rotation, RotationSpring, Translation, TranslationSpring};
 
 /// How the followed entity moves, which decides how its motion is sampled.
@@ -62,6 +64,7 @@ struct FixedSamples {
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
+#[component(on_add = crate::spring::first_use::<SpringFollow>)]
 #[reflect(Component)]
 pub struct SpringFollow {
     /// The entity to follow.
@@ -229,11 +232,16 @@ pub struct FollowPlugin;
 impl Plugin for FollowPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<SpringFollow>()
-            .register_type::<TargetMotion>()
-            .add_systems(
-                FixedPostUpdate,
-                sample_fixed_targets.run_if(any_with_component::<SpringFollow>),
-            );
+            .register_type::<TargetMotion>();
+        add_systems_on_first_use(
+            app,
+            &[TypeId::of::<SpringFollow>()],
+            FixedPostUpdate,
+            |schedule| {
+                schedule
+                    .add_systems(sample_fixed_targets.run_if(any_with_component::<SpringFollow>));
+            },
+        );
         // A follower moves its translation spring, and aims its rotation spring.
         add_property_systems(
             app,

@@ -36,6 +36,7 @@ use bevy::prelude::*;
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Default, Clone, PartialEq, Eq, Hash)]
+#[component(on_add = crate::spring::first_use::<SpringGroup>)]
 #[reflect(Component, Debug, Default, PartialEq, Clone)]
 pub struct SpringGroup {
     /// The group's name (`None`: the entity alone).

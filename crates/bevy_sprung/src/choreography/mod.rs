@@ -39,12 +39,15 @@ impl Plugin for ChoreographyPlugin {
             .register_type::<Repeat>()
             .register_type::<LoopMode>()
             .register_type::<OnInterrupt>()
-            .register_type::<SequencePhase>()
-            .add_systems(
-                schedule,
+            .register_type::<SequencePhase>();
+        // With the first group.
+        let groups = [core::any::TypeId::of::<SpringGroup>()];
+        crate::spring::add_systems_on_first_use(app, &groups, schedule, |schedule| {
+            schedule.add_systems(
                 group::announce_settled
                     .after(SpringSystems)
                     .run_if(any_with_component::<SpringGroup>),
             );
+        });
     }
 }

@@ -62,6 +62,7 @@ use crate::property::{SpringProperty, ValueOf};
 #[reflect(Component, Debug, Default, PartialEq, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[require(PointerContacts)]
+#[component(on_add = crate::spring::first_use::<InteractionState>)]
 pub enum InteractionState {
     /// No pointer on it.
     #[default]
@@ -462,13 +463,16 @@ impl Plugin for SpringInteractionPlugin {
             .add_observer(on_drag)
             .add_observer(on_drag_end)
             .add_observer(on_cancel)
-            .configure_sets(PreUpdate, InteractionSystems.after(PickingSystems::Last))
-            .add_systems(
-                PreUpdate,
+            .configure_sets(PreUpdate, InteractionSystems.after(PickingSystems::Last));
+        // With the first interactive entity.
+        let interactive = [core::any::TypeId::of::<InteractionState>()];
+        crate::spring::add_systems_on_first_use(app, &interactive, PreUpdate, |schedule| {
+            schedule.add_systems(
                 update_states
                     .in_set(InteractionSystems)
                     .run_if(any_with_component::<InteractionState>),
             );
+        });
         drag::build(app);
     }
 }

@@ -5,6 +5,7 @@ use bevy::prelude::*;
 use sprung::Spring;
 
 use super::JuiceSystems;
+use crate::spring::add_systems_on_first_use;
 
 /// Three translation and three rotation channels.
 const CHANNELS: usize = 6;
@@ -61,6 +62,7 @@ const MAX_SAMPLES_PER_FRAME: u64 = 64;
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
+#[component(on_add = crate::spring::first_use::<Shake>)]
 #[reflect(Component, Debug, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Shake {
@@ -318,17 +320,19 @@ pub(super) fn add_shakes(time: Res<Time>, mut shakes: Query<(&mut Shake, &mut Tr
 }
 
 pub(super) fn build(app: &mut App) {
-    app.register_type::<Shake>()
-        .add_systems(
-            PreUpdate,
-            take_off_shakes.run_if(any_with_component::<Shake>),
-        )
-        .add_systems(
-            PostUpdate,
+    app.register_type::<Shake>();
+    // With the first shake.
+    let shakes = [core::any::TypeId::of::<Shake>()];
+    add_systems_on_first_use(app, &shakes, PreUpdate, |schedule| {
+        schedule.add_systems(take_off_shakes.run_if(any_with_component::<Shake>));
+    });
+    add_systems_on_first_use(app, &shakes, PostUpdate, |schedule| {
+        schedule.add_systems(
             add_shakes
                 .in_set(JuiceSystems)
                 .run_if(any_with_component::<Shake>),
         );
+    });
 }
 
 #[cfg(test)]

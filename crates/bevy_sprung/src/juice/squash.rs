@@ -6,6 +6,7 @@ use sprung::Spring;
 
 use super::JuiceSystems;
 use crate::spring::SpringMotion;
+use crate::spring::add_systems_on_first_use;
 use crate::transform::Translation;
 
 /// What a [`SquashStretch`] keeps while it deforms.
@@ -62,6 +63,7 @@ pub enum Conserve {
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
+#[component(on_add = crate::spring::first_use::<SquashStretch>)]
 #[reflect(Component, Debug, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SquashStretch {
@@ -250,12 +252,15 @@ fn squash_and_stretch(
 
 pub(super) fn build(app: &mut App) {
     app.register_type::<SquashStretch>()
-        .register_type::<Conserve>()
-        .add_systems(
-            PostUpdate,
+        .register_type::<Conserve>();
+    // With the first squash and stretch.
+    let squashes = [core::any::TypeId::of::<SquashStretch>()];
+    add_systems_on_first_use(app, &squashes, PostUpdate, |schedule| {
+        schedule.add_systems(
             squash_and_stretch
                 .in_set(JuiceSystems)
                 .before(super::shake::add_shakes)
                 .run_if(any_with_component::<SquashStretch>),
         );
+    });
 }

@@ -18,5 +18,7 @@ pub use plugin::{
     PropertySystems, SpringPropertyPlugin, SpringSchedulePlugin, SpringSystems, SpringUpdate,
 };
 
-pub(crate) use plugin::{add_property_systems, spring_schedule};
+pub(crate) use plugin::{
+    add_property_systems, add_systems_on_first_use, first_use, spring_schedule,
+};
 pub(crate) use systems::step_springs;

@@ -5,7 +5,8 @@ use core::marker::PhantomData;
 
 use bevy::app::AnimationSystems;
 use bevy::ecs::intern::Interned;
-use bevy::ecs::schedule::{ScheduleLabel, SingleThreadedExecutor, SystemSet};
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::schedule::{ScheduleLabel, Schedules, SingleThreadedExecutor, SystemSet};
 use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
@@ -29,9 +30,9 @@ pub struct SpringSystems;
 /// [`SpringPlugin::in_schedule`](crate::SpringPlugin::in_schedule) names).
 ///
 /// What a scene does not spring costs nothing: the systems of a property join this schedule
-/// when the first spring on that property is added, and the schedule runs only once some
-/// property has had a spring. An app with the plugin and no springs runs one skipped system a
-/// frame. Order systems of your own between properties here, against [`PropertySystems`].
+/// when the first spring on that property is added, and the system that runs the schedule joins
+/// with the first spring on any property. An app with the plugin and no springs runs none of
+/// its systems (nor those of choreography, juice or interaction before their first component). Order systems of your own between properties here, against [`PropertySystems`].
 ///
 /// The runner is an exclusive system, as Bevy's fixed-timestep loop is: no other system of the
 /// outer schedule runs beside it while the springs step (they step on the compute pool's
@@ -110,8 +111,8 @@ impl<P: SpringProperty> core::hash::Hash for PropertySystems<P> {
     fn hash<H: core::hash::Hasher>(&self, _: &mut H) {}
 }
 
-/// Where the springs step, and the order their properties were added in: build-time
-/// bookkeeping of the plugins, not a setting.
+/// Where the springs step, the order their properties were added in, and the systems that wait
+/// for their first use: build-time bookkeeping of the plugins, not a setting.
 #[derive(Resource)]
 pub(crate) struct SpringSchedule {
     /// The schedule the springs step in.
@@ -120,76 +121,151 @@ pub(crate) struct SpringSchedule {
     last_property: Option<Interned<dyn SystemSet>>,
     /// The properties already added (adding one twice is harmless).
     registered: Vec<TypeId>,
-    /// What adds systems that wait for the first spring on any of their properties.
-    waiting: Vec<(Vec<TypeId>, AddSystems)>,
-    /// What adds systems whose property has a spring now, run on [`SpringUpdate`] before its
-    /// next run.
-    ready: Vec<AddSystems>,
-    /// The properties that have had a spring.
+    /// Systems that wait for the first component of any of their types.
+    waiting: Vec<(Vec<TypeId>, Interned<dyn ScheduleLabel>, AddSystems)>,
+    /// Systems whose component has been added, to add to their schedule: at once, or, if that
+    /// schedule is running then, from [`install_waiting_systems`] before its next run.
+    ready: Vec<(Interned<dyn ScheduleLabel>, AddSystems)>,
+    /// The component types (a property's for its springs) that have been added.
     in_use: Vec<TypeId>,
+    /// The schedule [`install_waiting_systems`] was put in, if it was needed.
+    installer: Option<Interned<dyn ScheduleLabel>>,
 }
 
 impl SpringSchedule {
-    /// Property `property` has a spring: its systems are added before the next step.
-    fn use_property(&mut self, property: TypeId) {
-        if self.in_use.contains(&property) {
-            return;
+    /// Component type `used` has been added: the systems waiting for it are ready. Whether any
+    /// are.
+    fn use_type(&mut self, used: TypeId) -> bool {
+        if self.in_use.contains(&used) {
+            return false;
         }
-        self.in_use.push(property);
-        let (now, later) = core::mem::take(&mut self.waiting)
+        self.in_use.push(used);
+        let (now, later): (Vec<_>, _) = core::mem::take(&mut self.waiting)
             .into_iter()
-            .partition(|(properties, _)| properties.contains(&property));
+            .partition(|(types, _, _)| types.contains(&used));
         self.waiting = later;
-        self.ready
-            .extend(now.into_iter().map(|(_, systems)| systems));
+        self.ready.extend(
+            now.iter()
+                .map(|&(_, schedule, systems)| (schedule, systems)),
+        );
+        !now.is_empty()
     }
 }
 
-/// Adds systems to [`SpringUpdate`].
+/// Adds systems to a schedule.
 pub(crate) type AddSystems = fn(&mut Schedule);
 
-/// The hook of a spring component on property `property` being added: the first one brings in
-/// the property's systems. One lookup in a short list per spring added.
-pub(crate) fn spring_added(world: &mut DeferredWorld, property: TypeId) {
+/// What stands for "a spring on any property" among the component types systems wait for: the
+/// trigger of the runner of [`SpringUpdate`].
+fn any_spring() -> TypeId {
+    TypeId::of::<SpringSystems>()
+}
+
+/// The hook of a component whose first addition brings in systems (see
+/// [`add_systems_on_first_use`]): one lookup in a short list for each one added.
+pub(crate) fn first_use<C: Component>(mut world: DeferredWorld, _: HookContext) {
+    component_used(&mut world, TypeId::of::<C>());
+}
+
+/// Component type `used` was added: if that brings systems in, they are added when the world
+/// next applies its commands (at once when spawned outside a schedule).
+fn component_used(world: &mut DeferredWorld, used: TypeId) {
     let in_use = world
         .get_resource::<SpringSchedule>()
-        .is_none_or(|bookkeeping| bookkeeping.in_use.contains(&property));
-    if !in_use && let Some(mut bookkeeping) = world.get_resource_mut::<SpringSchedule>() {
-        bookkeeping.use_property(property);
+        .is_none_or(|bookkeeping| bookkeeping.in_use.contains(&used));
+    if !in_use
+        && let Some(mut bookkeeping) = world.get_resource_mut::<SpringSchedule>()
+        && bookkeeping.use_type(used)
+    {
+        world.commands().queue(install_ready_systems);
     }
 }
 
-/// Runs `systems` on [`SpringUpdate`] once a spring on any of `properties` exists (before its
-/// next run, if one does).
-pub(crate) fn add_property_systems(app: &mut App, properties: &[TypeId], systems: AddSystems) {
+/// The hook of a spring component on property `property` being added: the first one brings in
+/// the property's systems (and the first on any property the runner of [`SpringUpdate`]).
+pub(crate) fn spring_added(world: &mut DeferredWorld, property: TypeId) {
+    component_used(world, property);
+    component_used(world, any_spring());
+}
+
+/// Runs `systems` on `schedule` once a component of any of `types` exists (at once if one
+/// already does): until then they are not in any schedule, and cost nothing a frame.
+pub(crate) fn add_systems_on_first_use(
+    app: &mut App,
+    types: &[TypeId],
+    schedule: impl ScheduleLabel,
+    systems: AddSystems,
+) {
+    let schedule = schedule.intern();
     spring_schedule(app);
     let mut bookkeeping = app.world_mut().resource_mut::<SpringSchedule>();
-    if properties
-        .iter()
-        .any(|property| bookkeeping.in_use.contains(property))
-    {
-        bookkeeping.ready.push(systems);
+    if types.iter().any(|used| bookkeeping.in_use.contains(used)) {
+        bookkeeping.ready.push((schedule, systems));
+        install_ready_systems(app.world_mut());
     } else {
-        bookkeeping.waiting.push((properties.to_vec(), systems));
+        bookkeeping
+            .waiting
+            .push((types.to_vec(), schedule, systems));
     }
 }
 
-/// Runs [`SpringUpdate`], first adding the systems of properties that got their first spring.
+/// Runs `systems` on [`SpringUpdate`] once a spring on any of `properties` exists.
+pub(crate) fn add_property_systems(app: &mut App, properties: &[TypeId], systems: AddSystems) {
+    add_systems_on_first_use(app, properties, SpringUpdate, systems);
+}
+
+/// Adds the systems that are ready to their schedules. A schedule that is running (the first
+/// component was added by one of its own systems or observers) cannot be changed until it
+/// ends: its systems wait, and [`install_waiting_systems`] is put in `First` (`Last` if `First`
+/// is the one running) to add them before it runs again.
+fn install_ready_systems(world: &mut World) {
+    let Some(mut bookkeeping) = world.get_resource_mut::<SpringSchedule>() else {
+        return;
+    };
+    let ready = core::mem::take(&mut bookkeeping.ready);
+    if ready.is_empty() {
+        return;
+    }
+    let mut schedules = world.get_resource_or_init::<Schedules>();
+    let running = schedules.get_temporarily_removed();
+    let (now, later): (Vec<_>, Vec<_>) = ready
+        .into_iter()
+        .partition(|(schedule, _)| !running.contains(schedule));
+    for (schedule, systems) in now {
+        systems(schedules.entry(schedule));
+    }
+    if later.is_empty() {
+        return;
+    }
+    let installer = if running.contains(&First.intern()) {
+        Last.intern()
+    } else {
+        First.intern()
+    };
+    let mut bookkeeping = world.resource_mut::<SpringSchedule>();
+    bookkeeping.ready = later;
+    if bookkeeping.installer.is_none() {
+        bookkeeping.installer = Some(installer);
+        world.resource_mut::<Schedules>().add_systems(
+            installer,
+            install_waiting_systems
+                .run_if(|bookkeeping: Res<SpringSchedule>| !bookkeeping.ready.is_empty()),
+        );
+    }
+}
+
+/// Adds the systems that waited for their schedule to end (see [`install_ready_systems`]).
+fn install_waiting_systems(world: &mut World) {
+    install_ready_systems(world);
+}
+
+/// Runs [`SpringUpdate`], first adding the systems of properties whose first spring was added
+/// while it ran.
 fn run_spring_update(world: &mut World) {
-    let ready = core::mem::take(&mut world.resource_mut::<SpringSchedule>().ready);
-    if !ready.is_empty() {
-        world.schedule_scope(SpringUpdate, |_, schedule| {
-            for add in ready {
-                add(schedule);
-            }
-        });
+    if !world.resource::<SpringSchedule>().ready.is_empty() {
+        install_ready_systems(world);
     }
     world.run_schedule(SpringUpdate);
-}
-
-/// Whether any property has had a spring (before that, [`SpringUpdate`] has nothing to run).
-fn any_property_in_use(bookkeeping: Res<SpringSchedule>) -> bool {
-    !bookkeeping.in_use.is_empty()
 }
 
 /// Puts [`SpringSystems`] into the schedule the springs step in (part of
@@ -230,6 +306,7 @@ impl Plugin for SpringSchedulePlugin {
             waiting: Vec::new(),
             ready: Vec::new(),
             in_use: Vec::new(),
+            installer: None,
         });
         // Every system in it runs after the one before (properties in order, each property's
         // systems chained): the single-threaded executor runs them without handing each to a
@@ -237,13 +314,12 @@ impl Plugin for SpringSchedulePlugin {
         app.init_schedule(SpringUpdate)
             .edit_schedule(SpringUpdate, |schedule| {
                 schedule.set_executor(SingleThreadedExecutor::new());
-            })
-            .add_systems(
-                self.schedule,
-                run_spring_update
-                    .in_set(SpringSystems)
-                    .run_if(any_property_in_use),
-            );
+            });
+        // The runner joins with the first spring: an app with no springs runs none of this
+        // crate's systems.
+        add_systems_on_first_use(app, &[any_spring()], self.schedule, |schedule| {
+            schedule.add_systems(run_spring_update.in_set(SpringSystems));
+        });
         if self.schedule == PostUpdate.intern() {
             app.configure_sets(
                 PostUpdate,
