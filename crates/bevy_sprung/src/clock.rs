@@ -72,6 +72,12 @@ impl FrameSteps {
         }
     }
 
+    /// Whether `other` has the same steps, bit for bit.
+    #[inline]
+    pub(crate) fn same(self, other: Self) -> bool {
+        self.0.map(f32::to_bits) == other.0.map(f32::to_bits)
+    }
+
     /// The step of the clock at `index`.
     #[inline]
     pub(crate) fn of(self, index: u8) -> f32 {

@@ -168,82 +168,52 @@ pub(crate) struct Slot {
     spring: Spring<f32>,
 }
 
-/// Four consecutive slots' state for preparing a frame: what time step each lane's increments
-/// are for, on which clock, and the anchors they are extended from.
-#[derive(Clone, Copy, Debug)]
-struct Lanes {
-    /// The time step each lane's increments are for (NaN: none yet).
-    prepared: Vec4,
-    /// Each lane's clock index ([`FrameSteps`]).
-    clocks: [u8; 4],
-    anchors: AnchorLanes,
-}
-
-impl Lanes {
-    /// Lanes of no slot yet: on the default clock, their (unused) increments the zeros that an
-    /// anchor of zeros reaching everywhere extends to, so that they never need an exact
-    /// transition.
+impl AnchorLanes {
+    /// Lanes of no slot yet: their (unused) increments the zeros that an anchor of zeros
+    /// reaching everywhere extends to, so that they never need an exact transition.
     const EMPTY: Self = Self {
-        prepared: Vec4::NAN,
-        clocks: [2; 4],
-        anchors: AnchorLanes {
-            dt: Vec4::ZERO,
-            f1: [Vec4::ZERO; 5],
-            g0: Vec4::ZERO,
-            omega_squared: Vec4::ZERO,
-            rate: Vec4::ZERO,
-            reach: Vec4::INFINITY,
-        },
+        dt: Vec4::ZERO,
+        f1: [Vec4::ZERO; 5],
+        g0: Vec4::ZERO,
+        omega_squared: Vec4::ZERO,
+        rate: Vec4::ZERO,
+        reach: Vec4::INFINITY,
     };
 
     /// Makes the increments of the four slots (`increments`, by lane; `slots`: the slots of
-    /// the lanes' chunk and this block's index in it) those over their clocks' time steps in `steps`: the lanes whose step is
-    /// new, extended together (inline: a game's time step changes every frame, and this is a
-    /// few vector multiply-adds per four slots), or computed exactly where out of reach.
+    /// the lanes' chunk and this block's index in it) those over their time steps `dt`,
+    /// extended together (inline: a game's time step changes every frame, and this is a few
+    /// vector multiply-adds per four slots), or computed exactly where out of reach. The
+    /// anchors are only read unless one is out of reach: a frame's preparation streams them
+    /// and writes the increments, nothing else.
     #[inline]
-    fn prepare(&mut self, increments: &mut [Vec4; 4], slots: (&[Slot], usize), steps: FrameSteps) {
-        let [a, b, c, d] = self.clocks;
-        // Four slots on one clock (nearly always): one step for all, not four gathered.
-        let dt = if self.clocks == [a; 4] {
-            Vec4::splat(steps.of(a))
-        } else {
-            Vec4::new(steps.of(a), steps.of(b), steps.of(c), steps.of(d))
-        };
-        // The lanes whose increments are for another time step (NaN: none yet).
-        let stale = dt.cmpne(self.prepared);
-        if !stale.any() {
-            return;
-        }
-        let (rows, within) = self.anchors.increments(dt);
-        if stale.all() & within.all() {
+    fn prepare(&mut self, increments: &mut [Vec4; 4], slots: (&[Slot], usize), dt: Vec4) {
+        let (rows, within) = self.increments(dt);
+        if within.all() {
             let by_lane = by_lane(rows);
             for (lane, increments) in increments.iter_mut().enumerate() {
                 *increments = by_lane.col(lane);
             }
-            self.prepared = dt;
         } else {
-            self.prepare_lanes(increments, slots, (dt, stale));
+            self.prepare_lanes(increments, slots, dt);
         }
     }
 
-    /// [`prepare`](Self::prepare) lane by lane: the stale lanes within reach take their
-    /// extension (computed again here rather than passed, which kept the common path storing
-    /// it), the others a transition computed exactly (and are anchored there).
+    /// [`prepare`](Self::prepare) lane by lane: the lanes within reach take their extension
+    /// (computed again here rather than passed, which kept the common path storing it), the
+    /// others a transition computed exactly (and are anchored there).
     #[cold]
     #[inline(never)]
     fn prepare_lanes(
         &mut self,
         increments: &mut [Vec4; 4],
         (slots, block): (&[Slot], usize),
-        (dt, stale): (Vec4, BVec4A),
+        dt: Vec4,
     ) {
         let slots = slots.get(4 * block..).unwrap_or_default();
-        let (rows, within) = self.anchors.increments(dt);
+        let (rows, within) = self.increments(dt);
         let by_lane = by_lane(rows);
         for (lane, increments) in increments.iter_mut().enumerate() {
-            if !stale.test(lane) {
-                continue;
-            }
             if within.test(lane) {
                 *increments = by_lane.col(lane);
             } else if let Some(slot) = slots.get(lane) {
@@ -251,10 +221,8 @@ impl Lanes {
                 let transition = spring.transition(dt);
                 let [[d00, d01], [d10, d11]] = transition.increment_matrix();
                 *increments = Vec4::new(d00, d01, d10, d11);
-                self.anchors
-                    .set(lane, &Anchor::new(&spring, dt, &transition));
+                self.set(lane, &Anchor::new(&spring, dt, &transition));
             }
-            self.prepared[lane] = dt[lane];
         }
     }
 }
@@ -282,11 +250,17 @@ pub(crate) struct TransitionTable {
     /// Each slot's increments `D = M − I` over this frame's time step, row-major, by the same
     /// index (16 bytes: all the per-entity step reads), padded to a multiple of four.
     increments: Vec<Vec4>,
-    /// The slots' preparation state, four slots a lane each.
-    lanes: Vec<Lanes>,
+    /// The anchors the slots' increments are extended from, four slots a lane each.
+    lanes: Vec<AnchorLanes>,
+    /// The clock index ([`FrameSteps`]) of each lane, by the same index as `lanes`.
+    lane_clocks: Vec<[u8; 4]>,
     index: HashMap<Key, u32>,
     /// The ticket of the first slot: the slots every clearing removed, in all.
     first: u64,
+    /// The steps every slot's increments are for, if they all are (no slot added since).
+    prepared_for: Option<FrameSteps>,
+    /// The clocks of the slots, a bit each (by [`FrameSteps`] index).
+    clocks: u8,
     /// Slots springs asked for this frame, per thread.
     requests: Parallel<Vec<(Key, Spring<f32>)>>,
 }
@@ -317,13 +291,38 @@ impl TransitionTable {
     /// ones (Bevy's virtual time varies from frame to frame), the slots are extended four at a
     /// time or recomputed, split over the compute pool's threads when it has more than one.
     pub(crate) fn prepare(&mut self, steps: FrameSteps) {
+        // The same steps as the frame before (a fixed time step): nothing to look at.
+        if self
+            .prepared_for
+            .is_some_and(|prepared| prepared.same(steps))
+        {
+            return;
+        }
+        self.prepared_for = Some(steps);
+        // Every slot on one clock (nearly always): its step splat once for the whole table.
+        if self.clocks.is_power_of_two() {
+            let dt = Vec4::splat(steps.of(self.clocks.trailing_zeros() as u8));
+            self.prepare_with(move |_| dt);
+        } else {
+            self.prepare_with(move |&[a, b, c, d]: &[u8; 4]| {
+                Vec4::new(steps.of(a), steps.of(b), steps.of(c), steps.of(d))
+            });
+        }
+    }
+
+    /// [`prepare`](Self::prepare) with `steps_of` giving the time steps of lanes on its clocks.
+    #[inline]
+    fn prepare_with(&mut self, steps_of: impl Fn(&[u8; 4]) -> Vec4 + Copy + Send) {
         // The steps copied into the closure: captured by reference, a slot cost 4 instructions
         // more (callgrind) where the closure was not inlined.
-        let prepare = move |lanes: &mut [Lanes], increments: &mut [Vec4], slots: &[Slot]| {
+        let prepare = move |(lanes, clocks): (&mut [AnchorLanes], &[[u8; 4]]),
+                            increments: &mut [Vec4],
+                            slots: &[Slot]| {
             let (increments, _) = increments.as_chunks_mut::<4>();
+            let blocks = lanes.iter_mut().zip(clocks).zip(increments);
             // The slots by block index: only a lane that needs an exact transition reads one.
-            for (block, (lanes, increments)) in lanes.iter_mut().zip(increments).enumerate() {
-                lanes.prepare(increments, (slots, block), steps);
+            for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
+                lanes.prepare(increments, (slots, block), steps_of(clocks));
             }
         };
         if compute_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
@@ -331,14 +330,19 @@ impl TransitionTable {
                 let chunks = self
                     .lanes
                     .chunks_mut(PREPARE_CHUNK / 4)
+                    .zip(self.lane_clocks.chunks(PREPARE_CHUNK / 4))
                     .zip(self.increments.chunks_mut(PREPARE_CHUNK))
                     .zip(self.slots.chunks(PREPARE_CHUNK));
-                for ((lanes, increments), slots) in chunks {
-                    scope.spawn(async move { prepare(lanes, increments, slots) });
+                for (((lanes, clocks), increments), slots) in chunks {
+                    scope.spawn(async move { prepare((lanes, clocks), increments, slots) });
                 }
             });
         } else {
-            prepare(&mut self.lanes, &mut self.increments, &self.slots);
+            prepare(
+                (&mut self.lanes, &self.lane_clocks),
+                &mut self.increments,
+                &self.slots,
+            );
         }
     }
 
@@ -386,16 +390,21 @@ impl TransitionTable {
             };
             let lane = self.slots.len() % 4;
             if lane == 0 {
-                self.lanes.push(Lanes::EMPTY);
+                self.lanes.push(AnchorLanes::EMPTY);
+                // The padding lanes on the default clock.
+                self.lane_clocks.push([2; 4]);
                 self.increments.extend([Vec4::ZERO; 4]);
             }
-            if let Some(lanes) = self.lanes.last_mut() {
-                lanes.clocks[lane] = key.clock;
-                lanes.prepared[lane] = f32::NAN;
-                lanes.anchors.set(lane, &Anchor::NONE);
+            if let (Some(lanes), Some(clocks)) =
+                (self.lanes.last_mut(), self.lane_clocks.last_mut())
+            {
+                clocks[lane] = key.clock;
+                lanes.set(lane, &Anchor::NONE);
             }
             self.slots.push(Slot { key, spring });
             self.index.insert(key, index);
+            self.clocks |= 1 << (key.clock & 3);
+            self.prepared_for = None;
         }
         // The per-thread buffers keep their capacity for the next frame.
         self.requests = requests;
@@ -404,7 +413,10 @@ impl TransitionTable {
             self.slots.clear();
             self.increments.clear();
             self.lanes.clear();
+            self.lane_clocks.clear();
             self.index.clear();
+            self.clocks = 0;
+            self.prepared_for = None;
         }
     }
 
@@ -575,6 +587,39 @@ mod tests {
             }
             before = now;
         }
+    }
+
+    /// A frame with the same steps as the last skips the table, yet slots added since (in a
+    /// block already prepared, and in a new one) are prepared for them, as are all slots after
+    /// a clearing.
+    #[test]
+    fn slots_added_under_the_same_steps_are_prepared() {
+        let springs: Vec<(Spring<f32>, u8)> = (0..7_u8)
+            .map(|i| {
+                let omega = 3.0 + 5.0 * f32::from(i);
+                (Spring::from_natural_frequency(omega, 0.6).unwrap(), 2)
+            })
+            .collect();
+        let steps = FrameSteps::all(1.0 / 144.0);
+        let mut table = TransitionTable::default();
+        for count in [2, 3, 7] {
+            for (spring, clock) in &springs[..count] {
+                if table.lookup(spring, *clock).is_none() {
+                    table.request(spring, *clock);
+                }
+            }
+            table.finish(count);
+            table.prepare(steps);
+            let worst = worst_prepared_error(&table, &springs[..count], steps);
+            assert!(worst < 8.0, "{count} slots: {worst} u");
+            table.prepare(steps);
+        }
+        table.finish(0);
+        let (spring, clock) = springs[6];
+        table.request(&spring, clock);
+        table.finish(1);
+        table.prepare(steps);
+        assert!(worst_prepared_error(&table, &[(spring, clock)], steps) < 8.0);
     }
 
     /// A table that is collected (more than twice as many slots as springs) starts over: no
