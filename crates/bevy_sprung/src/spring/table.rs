@@ -100,8 +100,10 @@ struct AnchorLanes {
     dt: Vec4,
     f1: [Vec4; 5],
     g0: Vec4,
-    omega_squared: Vec4,
-    rate: Vec4,
+    /// `−ω²` and `−2b`, negated once here rather than every frame: a product with a negated
+    /// factor is the negated product, bit for bit.
+    neg_omega_squared: Vec4,
+    neg_rate: Vec4,
     reach: Vec4,
 }
 
@@ -113,8 +115,8 @@ impl AnchorLanes {
             dt: Vec4::splat(anchor.dt),
             f1: anchor.f1.map(Vec4::splat),
             g0: Vec4::splat(anchor.g0),
-            omega_squared: Vec4::splat(anchor.omega_squared),
-            rate: Vec4::splat(anchor.rate),
+            neg_omega_squared: Vec4::splat(-anchor.omega_squared),
+            neg_rate: Vec4::splat(-anchor.rate),
             reach: Vec4::splat(anchor.reach),
         }
     }
@@ -126,8 +128,8 @@ impl AnchorLanes {
             coefficients[lane] = coefficient;
         }
         self.g0[lane] = anchor.g0;
-        self.omega_squared[lane] = anchor.omega_squared;
-        self.rate[lane] = anchor.rate;
+        self.neg_omega_squared[lane] = -anchor.omega_squared;
+        self.neg_rate[lane] = -anchor.rate;
         self.reach[lane] = anchor.reach;
     }
 
@@ -146,9 +148,9 @@ impl AnchorLanes {
         // g0(dt + h) = g0 + Σ f1⁽ⁿ⁾·hⁿ⁺¹/(n+1)!: the same coefficients over n + 1.
         let g0 = self.g0
             + h * (c0 + h * (c1 * 0.5 + h * (c2 * (1.0 / 3.0) + h * (c3 * 0.25 + h * (c4 * 0.2)))));
-        let w2 = self.omega_squared;
-        let w2g0 = w2 * g0;
-        ([-w2g0, f1, -(w2 * f1), -(w2g0 + self.rate * f1)], within)
+        let d00 = self.neg_omega_squared * g0;
+        let d11 = d00 + self.neg_rate * f1;
+        ([d00, f1, self.neg_omega_squared * f1, d11], within)
     }
 }
 
@@ -175,8 +177,8 @@ impl AnchorLanes {
         dt: Vec4::ZERO,
         f1: [Vec4::ZERO; 5],
         g0: Vec4::ZERO,
-        omega_squared: Vec4::ZERO,
-        rate: Vec4::ZERO,
+        neg_omega_squared: Vec4::ZERO,
+        neg_rate: Vec4::ZERO,
         reach: Vec4::INFINITY,
     };
 
