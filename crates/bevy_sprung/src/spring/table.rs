@@ -303,7 +303,9 @@ impl TransitionTable {
         self.prepared_for = Some(steps);
         // Every slot on one clock (nearly always): its step splat once for the whole table.
         if self.clocks.is_power_of_two() {
-            let dt = Vec4::splat(steps.of(self.clocks.trailing_zeros() as u8));
+            // The one bit's index (below 8, so the conversion never fails).
+            let clock = u8::try_from(self.clocks.trailing_zeros()).unwrap_or_default();
+            let dt = Vec4::splat(steps.of(clock));
             self.prepare_with(move |_| dt);
         } else {
             self.prepare_with(move |&[a, b, c, d]: &[u8; 4]| {
