@@ -252,6 +252,49 @@ fn a_first_shake_added_while_its_schedule_runs_shakes_from_the_next_frame() {
     );
 }
 
+/// Springs and juice spawned into the world before the plugin is added (their hooks had no
+/// plugin to tell) still bring in their systems: the spring arrives, and the shake shakes.
+#[test]
+fn springs_added_before_the_plugin_move() {
+    let mut app = App::new();
+    let target = Vec3::new(40.0, -25.0, 3.0);
+    let spring = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::snappy(), target),
+        ))
+        .id();
+    let mut shake = Shake::new(5).with_max_translation(Vec3::splat(4.0));
+    shake.add_trauma(1.0);
+    let base = Vec3::new(-300.0, 0.0, 0.0);
+    let shaken = app
+        .world_mut()
+        .spawn((Transform::from_translation(base), shake))
+        .id();
+    app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugin::default()))
+        .insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
+            crate::harness::frame(60),
+        ));
+    let mut moved = 0.0_f32;
+    for _ in 0..10 {
+        run(&mut app, 1);
+        let translation = app.world().get::<Transform>(shaken).unwrap().translation;
+        moved = moved.max(translation.distance(base));
+    }
+    assert!(moved > 0.5, "it shakes: {moved}");
+    run(&mut app, 600);
+    assert_eq!(
+        app.world().get::<Transform>(spring).unwrap().translation,
+        target
+    );
+    assert!(
+        app.world()
+            .get::<SpringAsleep<Translation>>(spring)
+            .is_some()
+    );
+}
+
 /// Adding a property's plugin again (a library and the app both asking for it) changes nothing:
 /// the spring is still stepped once per frame.
 #[test]

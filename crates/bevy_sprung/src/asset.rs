@@ -465,7 +465,8 @@ where
 {
     fn build(&self, app: &mut App) {
         app.register_type::<UseSequencePreset<P>>();
-        crate::spring::add_property_systems(app, &[core::any::TypeId::of::<P>()], |schedule| {
+        let springs = [core::any::TypeId::of::<crate::spring::PropertySpring<P>>()];
+        crate::spring::add_property_systems(app, &springs, |schedule| {
             schedule.add_systems(
                 apply_sequence_presets::<P>
                     .before(crate::spring::PropertySystems::<P>::default())

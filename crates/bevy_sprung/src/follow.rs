@@ -245,7 +245,10 @@ impl Plugin for FollowPlugin {
         // A follower moves its translation spring, and aims its rotation spring.
         add_property_systems(
             app,
-            &[TypeId::of::<Translation>(), TypeId::of::<Rotation>()],
+            &[
+                TypeId::of::<TranslationSpring>(),
+                TypeId::of::<RotationSpring>(),
+            ],
             |schedule| {
                 schedule.add_systems(
                     (

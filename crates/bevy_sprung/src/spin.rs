@@ -145,7 +145,8 @@ impl Plugin for SpinPlugin {
         app.add_plugins(crate::asset::SequenceAssetPlugin::<SpinAngle>::default());
         app.add_plugins(SpringPropertyPlugin::<SpinAngle>::default())
             .register_type::<Spin>();
-        add_property_systems(app, &[TypeId::of::<SpinAngle>()], |schedule| {
+        let springs = [TypeId::of::<PropertySpring<SpinAngle>>()];
+        add_property_systems(app, &springs, |schedule| {
             schedule.add_systems(
                 apply_spin
                     .after(step_springs::<SpinAngle>)

@@ -126,7 +126,7 @@ pub(crate) struct SpringSchedule {
     /// Systems whose component has been added, to add to their schedule: at once, or, if that
     /// schedule is running then, from [`install_waiting_systems`] before its next run.
     ready: Vec<(Interned<dyn ScheduleLabel>, AddSystems)>,
-    /// The component types (a property's for its springs) that have been added.
+    /// The component types that have been added (a spring's: `PropertySpring<P>`).
     in_use: Vec<TypeId>,
     /// The schedule [`install_waiting_systems`] was put in, if it was needed.
     installer: Option<Interned<dyn ScheduleLabel>>,
@@ -181,15 +181,17 @@ fn component_used(world: &mut DeferredWorld, used: TypeId) {
     }
 }
 
-/// The hook of a spring component on property `property` being added: the first one brings in
-/// the property's systems (and the first on any property the runner of [`SpringUpdate`]).
-pub(crate) fn spring_added(world: &mut DeferredWorld, property: TypeId) {
-    component_used(world, property);
+/// The hook of a spring component (of type `spring`) being added: the first one brings in its
+/// property's systems (and the first on any property the runner of [`SpringUpdate`]).
+pub(crate) fn spring_added(world: &mut DeferredWorld, spring: TypeId) {
+    component_used(world, spring);
     component_used(world, any_spring());
 }
 
-/// Runs `systems` on `schedule` once a component of any of `types` exists (at once if one
-/// already does): until then they are not in any schedule, and cost nothing a frame.
+/// Runs `systems` on `schedule` once a component of any of `types` (component types) exists:
+/// until then they are not in any schedule, and cost nothing a frame. Components added before
+/// the plugin that calls this (whose hooks found no bookkeeping to tell) count: the systems
+/// are added at once.
 pub(crate) fn add_systems_on_first_use(
     app: &mut App,
     types: &[TypeId],
@@ -198,20 +200,48 @@ pub(crate) fn add_systems_on_first_use(
 ) {
     let schedule = schedule.intern();
     spring_schedule(app);
+    let present = already_added(app.world(), types);
     let mut bookkeeping = app.world_mut().resource_mut::<SpringSchedule>();
     if types.iter().any(|used| bookkeeping.in_use.contains(used)) {
         bookkeeping.ready.push((schedule, systems));
-        install_ready_systems(app.world_mut());
     } else {
         bookkeeping
             .waiting
             .push((types.to_vec(), schedule, systems));
+        for used in present {
+            bookkeeping.use_type(used);
+        }
+    }
+    install_ready_systems(app.world_mut());
+}
+
+/// Runs `systems` on [`SpringUpdate`] once a spring component of any of `springs` (the types
+/// of `PropertySpring<P>`s) exists. Springs added before the plugin bring in the runner of
+/// [`SpringUpdate`] too.
+pub(crate) fn add_property_systems(app: &mut App, springs: &[TypeId], systems: AddSystems) {
+    add_systems_on_first_use(app, springs, SpringUpdate, systems);
+    if !already_added(app.world(), springs).is_empty() {
+        app.world_mut()
+            .resource_mut::<SpringSchedule>()
+            .use_type(any_spring());
+        install_ready_systems(app.world_mut());
     }
 }
 
-/// Runs `systems` on [`SpringUpdate`] once a spring on any of `properties` exists.
-pub(crate) fn add_property_systems(app: &mut App, properties: &[TypeId], systems: AddSystems) {
-    add_systems_on_first_use(app, properties, SpringUpdate, systems);
+/// Those of component `types` that some entity already has.
+fn already_added(world: &World, types: &[TypeId]) -> Vec<TypeId> {
+    types
+        .iter()
+        .copied()
+        .filter(|&used| {
+            world.components().get_id(used).is_some_and(|component| {
+                world
+                    .archetypes()
+                    .iter()
+                    .any(|archetype| !archetype.is_empty() && archetype.contains(component))
+            })
+        })
+        .collect()
 }
 
 /// Adds the systems that are ready to their schedules. A schedule that is running (the first
@@ -384,7 +414,11 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
             .register_type::<SpringSequence<P>>();
         #[cfg(feature = "picking")]
         app.register_type::<crate::interaction::InteractionTargets<P>>();
-        add_property_systems(app, &[property], add_systems_of::<P>);
+        add_property_systems(
+            app,
+            &[TypeId::of::<PropertySpring<P>>()],
+            add_systems_of::<P>,
+        );
         if let Some(previous) = previous {
             app.configure_sets(
                 SpringUpdate,
