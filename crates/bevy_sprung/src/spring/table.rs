@@ -1,5 +1,7 @@
 //! Every distinct spring's transition, kept across frames: what the per-entity step reads.
 
+use core::sync::atomic::{AtomicBool, Ordering};
+
 use bevy::math::{BVec4A, Mat4, Vec4};
 use bevy::platform::collections::HashMap;
 use bevy::tasks::ComputeTaskPool;
@@ -265,6 +267,9 @@ pub(crate) struct TransitionTable {
     clocks: u8,
     /// Slots springs asked for this frame, per thread.
     requests: Parallel<Vec<(Key, Spring<f32>)>>,
+    /// Whether any spring asked for a slot since the last [`finish`](Self::finish): a frame
+    /// without requests does not visit the per-thread buffers (about 950 instructions).
+    requested: AtomicBool,
 }
 
 /// The threads of Bevy's compute pool (1 before it is made): whether work is worth splitting.
@@ -372,6 +377,8 @@ impl TransitionTable {
     /// [`finish`](Self::finish)es: from the next frame on, the spring finds it.
     #[cold]
     pub(crate) fn request(&self, spring: &Spring<f32>, clock: u8) {
+        // Read after the frame's parallel steps are joined, which orders this store before it.
+        self.requested.store(true, Ordering::Relaxed);
         self.requests
             .borrow_local_mut()
             .push((Key::new(spring, clock), *spring));
@@ -382,6 +389,24 @@ impl TransitionTable {
     /// holds more than twice as many slots as there are springs (and a few more), so that
     /// springs despawned or changed do not keep slots for ever.
     pub(crate) fn finish(&mut self, springs: usize) {
+        if core::mem::take(self.requested.get_mut()) {
+            self.add_requested();
+        }
+        if self.slots.len() > 2 * springs + 64 {
+            self.first = self.first.wrapping_add(self.slots.len() as u64);
+            self.slots.clear();
+            self.increments.clear();
+            self.lanes.clear();
+            self.lane_clocks.clear();
+            self.index.clear();
+            self.clocks = 0;
+            self.prepared_for = None;
+        }
+    }
+
+    /// [`finish`](Self::finish)'s first part: adds the slots requested.
+    #[cold]
+    fn add_requested(&mut self) {
         let mut requests = core::mem::take(&mut self.requests);
         for (key, spring) in requests.iter_mut().flat_map(|requests| requests.drain(..)) {
             if self.index.contains_key(&key)
@@ -412,16 +437,6 @@ impl TransitionTable {
         }
         // The per-thread buffers keep their capacity for the next frame.
         self.requests = requests;
-        if self.slots.len() > 2 * springs + 64 {
-            self.first = self.first.wrapping_add(self.slots.len() as u64);
-            self.slots.clear();
-            self.increments.clear();
-            self.lanes.clear();
-            self.lane_clocks.clear();
-            self.index.clear();
-            self.clocks = 0;
-            self.prepared_for = None;
-        }
     }
 
     /// The parameters of the slot with `ticket`, if the table has it: the last valid
