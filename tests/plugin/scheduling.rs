@@ -74,8 +74,8 @@ fn no_ambiguities_with_the_plugins_systems() {
         ScaleSpring::new(Spring::snappy(), Vec3::splat(2.0)),
         PropertySpring::<crate::properties::ScaleX>::new(Spring::snappy(), 3.0),
     ));
-    // What brings in the other systems that join with their first component: a group, juice
-    // and a follower.
+    // What brings in the other systems that join with their first component: a group, juice,
+    // a follower and a sequence.
     let leader = app.world_mut().spawn(Transform::default()).id();
     app.world_mut().spawn((
         Transform::default(),
@@ -84,6 +84,11 @@ fn no_ambiguities_with_the_plugins_systems() {
         Shake::new(1),
         SquashStretch::new(0.01, 1.2),
         SpringFollow::new(leader, Vec3::ONE),
+    ));
+    app.world_mut().spawn((
+        Transform::default(),
+        TranslationSpring::new(Spring::snappy(), Vec3::Z),
+        SpringSequence::<Translation>::new().then(Vec3::X),
     ));
     run(&mut app, 3);
     // The names are there to be matched (Bevy's `debug` feature), so the check is not vacuous.
@@ -186,12 +191,12 @@ fn no_springs_no_work() {
         2,
         "only the translation systems run: {ran:?}"
     );
-    // Only translation's systems (and the followers', which move translation springs) came in,
-    // besides the runner.
+    // Only translation's systems came in, besides the runner: not those of sequences or
+    // followers, which wait for their own first component.
     assert!(busy.len() >= 4, "{busy:?}");
     assert!(
-        busy.iter().all(|(name, _)| name.contains("Translation")
-            || name.contains("follow")
+        busy.iter().all(|(name, _)| (name.contains("Translation")
+            && !name.contains("drive_sequences"))
             || name.contains("run_spring_update")),
         "{busy:?}"
     );

@@ -5,9 +5,7 @@ use core::any::TypeId;
 use bevy::prelude::*;
 
 use crate::clock::SpringTime;
-use crate::spring::{
-    PropertySystems, SpringTargetMut, add_property_systems, add_systems_on_first_use,
-};
+use crate::spring::{PropertySystems, SpringTargetMut, SpringUpdate, add_systems_on_first_use};
 use crate::transform::{Rotation, RotationSpring, Translation, TranslationSpring};
 
 /// How the followed entity moves, which decides how its motion is sampled.
@@ -242,13 +240,12 @@ impl Plugin for FollowPlugin {
                     .add_systems(sample_fixed_targets.run_if(any_with_component::<SpringFollow>));
             },
         );
-        // A follower moves its translation spring, and aims its rotation spring.
-        add_property_systems(
+        // A follower moves its translation spring, and aims its rotation spring; with the first
+        // follower.
+        add_systems_on_first_use(
             app,
-            &[
-                TypeId::of::<TranslationSpring>(),
-                TypeId::of::<RotationSpring>(),
-            ],
+            &[TypeId::of::<SpringFollow>()],
+            SpringUpdate,
             |schedule| {
                 schedule.add_systems(
                     (

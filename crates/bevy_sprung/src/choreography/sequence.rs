@@ -138,6 +138,7 @@ pub enum SequencePhase {
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]
+#[component(on_add = crate::spring::first_use::<Self>)]
 #[reflect(Component, Debug)]
 pub struct SpringSequence<P: SpringProperty> {
     steps: Vec<SequenceStep<ValueOf<P>>>,

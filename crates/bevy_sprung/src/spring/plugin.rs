@@ -419,6 +419,20 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
             &[TypeId::of::<PropertySpring<P>>()],
             add_systems_of::<P>,
         );
+        // A sequence drives the property's springs, before they step; with its first sequence.
+        add_systems_on_first_use(
+            app,
+            &[TypeId::of::<SpringSequence<P>>()],
+            SpringUpdate,
+            |schedule| {
+                schedule.add_systems(
+                    drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>
+                        .before(wake_springs::<P>)
+                        .in_set(PropertySystems::<P>::default())
+                        .run_if(any_with_component::<SpringSequence<P>>),
+                );
+            },
+        );
         if let Some(previous) = previous {
             app.configure_sets(
                 SpringUpdate,
@@ -436,8 +450,6 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
 fn add_systems_of<P: SpringProperty>(schedule: &mut Schedule) {
     schedule.add_systems(
         (
-            drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>
-                .run_if(any_with_component::<SpringSequence<P>>),
             (wake_springs::<P>, step_springs::<P>)
                 .chain()
                 .run_if(any_with_component::<PropertySpring<P>>),
@@ -452,6 +464,7 @@ fn add_systems_of<P: SpringProperty>(schedule: &mut Schedule) {
     schedule.add_systems(
         crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>
             .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>)
+            .before(wake_springs::<P>)
             .in_set(PropertySystems::<P>::default())
             .run_if(any_with_component::<crate::interaction::InteractionTargets<P>>),
     );
@@ -460,7 +473,8 @@ fn add_systems_of<P: SpringProperty>(schedule: &mut Schedule) {
     #[cfg(feature = "asset")]
     {
         let presets = crate::asset::apply_presets::<P, PropertySpring<P>>
-            .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>);
+            .before(drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>)
+            .before(wake_springs::<P>);
         #[cfg(feature = "picking")]
         let presets =
             presets.before(crate::interaction::retarget_on_interaction::<P, PropertySpring<P>>);
