@@ -202,6 +202,17 @@ fn no_springs_no_work() {
     );
 }
 
+/// The largest distance of `entity`'s translation from `base` over the next `frames` frames.
+fn largest_offset(app: &mut App, entity: Entity, base: Vec3, frames: u32) -> f32 {
+    let mut largest = 0.0_f32;
+    for _ in 0..frames {
+        run(app, 1);
+        let translation = app.world().get::<Transform>(entity).unwrap().translation;
+        largest = largest.max(translation.distance(base));
+    }
+    largest
+}
+
 /// A shake added by a system of `PostUpdate`, the schedule its systems join (and which cannot
 /// change while it runs), gets them from the next frame: it shakes, and calms back exactly to
 /// where it was. Systems that waited so are added by one system in `First`, which is then
@@ -231,17 +242,12 @@ fn a_first_shake_added_while_its_schedule_runs_shakes_from_the_next_frame() {
         app.world().get::<Shake>(entity).is_some(),
         "the shake was added"
     );
-    let mut moved = 0.0_f32;
-    for _ in 0..10 {
-        run(&mut app, 1);
-        let translation = app.world().get::<Transform>(entity).unwrap().translation;
-        moved = moved.max(translation.distance(base));
-    }
+    let moved = largest_offset(&mut app, entity, base, 10);
     assert!(moved > 0.5, "it shakes: {moved}");
     let runs = spring_system_runs(&app);
     let waiting: Vec<_> = runs
         .iter()
-        .filter(|(name, _)| name.contains("install_waiting_systems"))
+        .filter(|(name, _)| name.contains("install_ready_systems"))
         .collect();
     assert_eq!(waiting.len(), 1, "{runs:?}");
     run(&mut app, 300);
@@ -251,7 +257,7 @@ fn a_first_shake_added_while_its_schedule_runs_shakes_from_the_next_frame() {
     assert_eq!(
         spring_system_runs(&app)
             .iter()
-            .find(|(name, _)| name.contains("install_waiting_systems")),
+            .find(|(name, _)| name.contains("install_ready_systems")),
         waiting.first().copied(),
         "the installer is skipped once it has nothing to add"
     );
@@ -281,12 +287,7 @@ fn springs_added_before_the_plugin_move() {
         .insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
             crate::harness::frame(60),
         ));
-    let mut moved = 0.0_f32;
-    for _ in 0..10 {
-        run(&mut app, 1);
-        let translation = app.world().get::<Transform>(shaken).unwrap().translation;
-        moved = moved.max(translation.distance(base));
-    }
+    let moved = largest_offset(&mut app, shaken, base, 10);
     assert!(moved > 0.5, "it shakes: {moved}");
     run(&mut app, 600);
     assert_eq!(

@@ -124,11 +124,11 @@ pub(crate) struct SpringSchedule {
     /// Systems that wait for the first component of any of their types.
     waiting: Vec<(Vec<TypeId>, Interned<dyn ScheduleLabel>, AddSystems)>,
     /// Systems whose component has been added, to add to their schedule: at once, or, if that
-    /// schedule is running then, from [`install_waiting_systems`] before its next run.
+    /// schedule is running then, from [`install_ready_systems`] run before its next run.
     ready: Vec<(Interned<dyn ScheduleLabel>, AddSystems)>,
     /// The component types that have been added (a spring's: `PropertySpring<P>`).
     in_use: Vec<TypeId>,
-    /// The schedule [`install_waiting_systems`] was put in, if it was needed.
+    /// The schedule [`install_ready_systems`] was put in as a system, if it was needed.
     installer: Option<Interned<dyn ScheduleLabel>>,
 }
 
@@ -191,13 +191,13 @@ pub(crate) fn spring_added(world: &mut DeferredWorld, spring: TypeId) {
 /// Runs `systems` on `schedule` once a component of any of `types` (component types) exists:
 /// until then they are not in any schedule, and cost nothing a frame. Components added before
 /// the plugin that calls this (whose hooks found no bookkeeping to tell) count: the systems
-/// are added at once.
+/// are added at once. Whether there were any.
 pub(crate) fn add_systems_on_first_use(
     app: &mut App,
     types: &[TypeId],
     schedule: impl ScheduleLabel,
     systems: AddSystems,
-) {
+) -> bool {
     let schedule = schedule.intern();
     spring_schedule(app);
     let present = already_added(app.world(), types);
@@ -208,19 +208,19 @@ pub(crate) fn add_systems_on_first_use(
         bookkeeping
             .waiting
             .push((types.to_vec(), schedule, systems));
-        for used in present {
+        for &used in &present {
             bookkeeping.use_type(used);
         }
     }
     install_ready_systems(app.world_mut());
+    !present.is_empty()
 }
 
 /// Runs `systems` on [`SpringUpdate`] once a spring component of any of `springs` (the types
 /// of `PropertySpring<P>`s) exists. Springs added before the plugin bring in the runner of
 /// [`SpringUpdate`] too.
 pub(crate) fn add_property_systems(app: &mut App, springs: &[TypeId], systems: AddSystems) {
-    add_systems_on_first_use(app, springs, SpringUpdate, systems);
-    if !already_added(app.world(), springs).is_empty() {
+    if add_systems_on_first_use(app, springs, SpringUpdate, systems) {
         app.world_mut()
             .resource_mut::<SpringSchedule>()
             .use_type(any_spring());
@@ -246,7 +246,7 @@ fn already_added(world: &World, types: &[TypeId]) -> Vec<TypeId> {
 
 /// Adds the systems that are ready to their schedules. A schedule that is running (the first
 /// component was added by one of its own systems or observers) cannot be changed until it
-/// ends: its systems wait, and [`install_waiting_systems`] is put in `First` (`Last` if `First`
+/// ends: its systems wait, and this function is put in `First` as a system (`Last` if `First`
 /// is the one running) to add them before it runs again.
 fn install_ready_systems(world: &mut World) {
     let Some(mut bookkeeping) = world.get_resource_mut::<SpringSchedule>() else {
@@ -278,15 +278,10 @@ fn install_ready_systems(world: &mut World) {
         bookkeeping.installer = Some(installer);
         world.resource_mut::<Schedules>().add_systems(
             installer,
-            install_waiting_systems
+            install_ready_systems
                 .run_if(|bookkeeping: Res<SpringSchedule>| !bookkeeping.ready.is_empty()),
         );
     }
-}
-
-/// Adds the systems that waited for their schedule to end (see [`install_ready_systems`]).
-fn install_waiting_systems(world: &mut World) {
-    install_ready_systems(world);
 }
 
 /// Runs [`SpringUpdate`], first adding the systems of properties whose first spring was added
