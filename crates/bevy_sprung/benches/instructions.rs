@@ -27,6 +27,7 @@ fn scenes() -> Vec<(Method, bool)> {
     vec![
         (Method::Euler, false),
         (Method::BareExact, false),
+        (Method::LanesModel, false),
         (Method::Springs { springs: 1 }, false),
         (Method::EulerUiScale, false),
         (Method::UiScaleSprings, false),

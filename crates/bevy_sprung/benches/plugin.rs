@@ -71,6 +71,7 @@ fn euler(c: &mut Criterion) {
         &[
             Method::Euler,
             Method::BareExact,
+            Method::LanesModel,
             Method::Springs { springs: 1 },
             Method::Springs { springs: 0 },
         ],

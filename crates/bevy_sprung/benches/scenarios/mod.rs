@@ -24,6 +24,8 @@ use bevy_sprung::sprung::SpringState;
 use bevy_tweening::lens::TransformPositionLens;
 use bevy_tweening::{RepeatCount, RepeatStrategy, Tween, TweenAnim, TweeningPlugin};
 
+pub(crate) mod lanes;
+
 /// How far each entity is from its target, in world units.
 pub(crate) const DISTANCE: f32 = 1_000.0;
 
@@ -133,6 +135,8 @@ pub(crate) enum Method {
     EulerUiScale,
     /// A hand-written exact spring: one shared transition, no checks.
     BareExact,
+    /// A model of the plugin's usual step, four springs at a time (see `lanes.rs`).
+    LanesModel,
     /// A hand-written `smooth_nudge` system.
     SmoothNudge,
     /// bevy_tweening 0.16.
@@ -158,6 +162,7 @@ impl Method {
             Self::Euler => "euler".into(),
             Self::EulerUiScale => "euler_ui_scale".into(),
             Self::BareExact => "bare_exact".into(),
+            Self::LanesModel => "lanes_model".into(),
             Self::SmoothNudge => "smooth_nudge".into(),
             Self::Tweening => "bevy_tweening".into(),
             Self::Touch => "touch".into(),
@@ -175,6 +180,7 @@ impl Method {
             Self::Euler
             | Self::EulerUiScale
             | Self::BareExact
+            | Self::LanesModel
             | Self::SmoothNudge
             | Self::Tweening
             | Self::Touch => Update.intern(),
@@ -207,6 +213,9 @@ impl Method {
             }
             Self::BareExact => {
                 app.add_systems(Update, bare_exact);
+            }
+            Self::LanesModel => {
+                app.add_systems(Update, lanes::lanes_model);
             }
             Self::SmoothNudge => {
                 app.add_systems(Update, nudge);
@@ -284,6 +293,7 @@ impl Method {
                     )
                 }));
             }
+            Self::LanesModel => lanes::spawn(world, count),
             Self::SmoothNudge => {
                 world.spawn_batch(
                     (0..count)
