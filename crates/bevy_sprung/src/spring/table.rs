@@ -185,13 +185,14 @@ impl AnchorLanes {
     };
 
     /// Makes the increments of the four slots (`increments`, by lane; `slots`: the slots of
-    /// the lanes' chunk and this block's index in it) those over their time steps `dt`,
+    /// the lanes' chunk, by reference so that the loop does not store the slice every block,
+    /// and this block's index in it) those over their time steps `dt`,
     /// extended together (inline: a game's time step changes every frame, and this is a few
     /// vector multiply-adds per four slots), or computed exactly where out of reach. The
     /// anchors are only read unless one is out of reach: a frame's preparation streams them
     /// and writes the increments, nothing else.
     #[inline]
-    fn prepare(&mut self, increments: &mut [Vec4; 4], slots: (&[Slot], usize), dt: Vec4) {
+    fn prepare(&mut self, increments: &mut [Vec4; 4], (slots, block): (&&[Slot], usize), dt: Vec4) {
         let (rows, within) = self.increments(dt);
         if within.all() {
             let by_lane = by_lane(rows);
@@ -199,7 +200,7 @@ impl AnchorLanes {
                 *increments = by_lane.col(lane);
             }
         } else {
-            self.prepare_lanes(increments, slots, dt);
+            self.prepare_lanes(increments, slots, block, dt);
         }
     }
 
@@ -211,7 +212,8 @@ impl AnchorLanes {
     fn prepare_lanes(
         &mut self,
         increments: &mut [Vec4; 4],
-        (slots, block): (&[Slot], usize),
+        slots: &[Slot],
+        block: usize,
         dt: Vec4,
     ) {
         let slots = slots.get(4 * block..).unwrap_or_default();
@@ -331,7 +333,7 @@ impl TransitionTable {
             let blocks = lanes.iter_mut().zip(clocks).zip(increments);
             // The slots by block index: only a lane that needs an exact transition reads one.
             for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
-                lanes.prepare(increments, (slots, block), steps_of(clocks));
+                lanes.prepare(increments, (&slots, block), steps_of(clocks));
             }
         };
         if compute_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
