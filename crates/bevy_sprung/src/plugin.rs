@@ -41,10 +41,13 @@ use crate::transform::TransformSpringPlugin;
 /// ```
 ///
 /// # Using every core
-/// Springs step in parallel on Bevy's compute task pool. Bevy gives that pool the cores left
-/// after one thread each for I/O and async tasks, so on a machine with two cores it has one
-/// thread and springs step on one core. Ask for a compute thread per core (the I/O and async
-/// threads mostly sleep) to step them on all of them:
+/// Springs step in parallel: each table's springs are split into chunks, a few per thread, run
+/// by Bevy's compute task pool and by the thread that runs the springs' schedule (the main
+/// thread: it runs the chunks too while it waits, and the pool's threads have nothing else to
+/// run then). Bevy gives the compute pool the cores left after one thread each for I/O and async
+/// tasks: on a machine with two cores one thread, so the springs step on both cores with
+/// Bevy's defaults. On more cores, ask for a compute thread per core (the I/O and async threads
+/// mostly sleep) to step them on all of them:
 /// ```
 /// use bevy::app::{TaskPoolOptions, TaskPoolPlugin, TaskPoolThreadAssignmentPolicy};
 /// use bevy::prelude::*;
@@ -65,12 +68,11 @@ use crate::transform::TransformSpringPlugin;
 ///     .add_plugins((MinimalPlugins.set(task_pools), SpringPlugin::default()))
 ///     .update();
 /// ```
-/// Each table's springs are then split into chunks, a few per thread. On this crate's two-core
-/// benchmark machine, 100 000 moving springs stepped 1.65–2.2× faster with two compute threads
-/// than with Bevy's default one (across runs), and a whole frame of a million springs 1.65–1.7×
-/// faster. Each spring steps independently (the same result on any number of threads), so the
-/// split should keep scaling with cores until memory bandwidth, not arithmetic, bounds the step:
-/// the spring and its `Transform` are about 180 bytes per entity per frame.
+/// On this crate's two-core benchmark machine, 100 000 moving springs step about 1.9× faster
+/// on both cores than on one. Each spring steps independently (the same result on any number
+/// of threads), so the split should keep scaling with cores until memory bandwidth, not
+/// arithmetic, bounds the step: the spring and its `Transform` are about 140 bytes per entity
+/// per frame.
 #[derive(Debug, Clone)]
 pub struct SpringPlugin {
     /// The schedule the springs step in: `PostUpdate` by default, `FixedUpdate` for

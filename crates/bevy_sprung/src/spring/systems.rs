@@ -10,7 +10,7 @@ use bevy::utils::Parallel;
 use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringAsleep, SpringMotion, Stepped, UsualStep};
 use super::event::SpringSettled;
-use super::table::{TransitionTable, compute_threads};
+use super::table::{TransitionTable, scope_threads};
 use crate::choreography::{SettleTracker, SpringGroup};
 use crate::clock::{FrameSteps, SpringTime};
 use crate::property::SpringProperty;
@@ -23,12 +23,14 @@ type Seen = Without<crate::visibility::CatchUpWhenHidden>;
 type Seen = ();
 
 /// Steps every awake spring on property `P`, a table's columns at a time (split into chunks
-/// over the compute pool's threads if it has several), and puts the ones that settle to sleep
-/// (triggering [`SpringSettled<P>`]).
+/// run by the compute pool's threads and this one, when there are enough springs), and puts
+/// the ones that settle to sleep (triggering [`SpringSettled<P>`]).
 ///
-/// Bevy gives the compute pool the cores left after its I/O and async pools: on a machine with
-/// two cores that is one thread, and the springs step on it alone. See
-/// [`SpringPlugin`](crate::SpringPlugin) for the task-pool setting that gives them both.
+/// This system runs in [`SpringUpdate`](crate::SpringUpdate), which an exclusive system runs
+/// on the thread that runs the schedule around it: the compute pool's threads are free, and
+/// with the calling thread they use every core Bevy gives the pool, plus one (on a machine with
+/// two cores, both). See [`SpringPlugin`](crate::SpringPlugin) for the task-pool setting that
+/// uses every core on larger machines.
 #[cfg_attr(
     feature = "visibility",
     expect(
@@ -100,7 +102,7 @@ pub(crate) fn step_springs<P: SpringProperty>(
     // frames): only that path looks the cache up, so the usual step carries nothing from
     // entity to entity.
     let caches = &*caches;
-    let threads = compute_threads();
+    let threads = scope_threads();
     if let Ok(tables) = springs.contiguous_iter_mut() {
         // Each table's columns as slices, the step inlined into a plain loop over them, change
         // ticks read and written directly; on the compute pool's threads if it has several.

@@ -274,9 +274,13 @@ pub(crate) struct TransitionTable {
     requested: AtomicBool,
 }
 
-/// The threads of Bevy's compute pool (1 before it is made): whether work is worth splitting.
-pub(crate) fn compute_threads() -> usize {
-    ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num())
+/// The threads that run the tasks of a compute-pool scope: the pool's, and the thread that
+/// opened the scope, which runs them too while it waits (1 before the pool is made). The
+/// springs step inside an exclusive system, on the thread that runs the schedule (the main
+/// thread), while the pool's threads have nothing else to run: on a machine with two cores,
+/// where Bevy gives the pool one thread, that is both cores.
+pub(crate) fn scope_threads() -> usize {
+    ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num() + 1)
 }
 
 /// Slots per parallel task when preparing: enough work to outweigh handing it out.
@@ -336,7 +340,7 @@ impl TransitionTable {
                 lanes.prepare(increments, (&slots, block), steps_of(clocks));
             }
         };
-        if compute_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
+        if scope_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
             ComputeTaskPool::get().scope(|scope| {
                 let chunks = self
                     .lanes
