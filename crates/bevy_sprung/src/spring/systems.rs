@@ -457,10 +457,19 @@ fn any_newer(ticks: &[Tick], last_run: Tick, this_run: Tick) -> bool {
         .wrapping_add(1)
         .wrapping_add(BIAS);
     let last_newer = (since_system ^ BIAS).cast_signed().wrapping_sub(1);
-    let all_old = ticks.iter().fold(true, |all, tick| {
-        all & (tick.get().wrapping_sub(origin).cast_signed() > last_newer)
-    });
-    !all_old
+    let old = |tick: &Tick| tick.get().wrapping_sub(origin).cast_signed() > last_newer;
+    // Sixteen ticks (four vectors) a round: the loop's own three instructions amortised over
+    // more of them (1.4 -> 1.2 instructions a tick).
+    let (rounds, rest) = ticks.as_chunks::<16>();
+    // Per position in a round, all ones while every tick there is old (a vector lane's mask).
+    let mut lanes = [-1_i32; 16];
+    for round in rounds {
+        for (lane, tick) in lanes.iter_mut().zip(round) {
+            *lane &= -i32::from(old(tick));
+        }
+    }
+    let all_old = lanes.iter().fold(-1, |all, lane| all & lane) != 0;
+    !(all_old & rest.iter().fold(true, |all, tick| all & old(tick)))
 }
 
 #[cfg(test)]
@@ -469,8 +478,8 @@ mod tests {
 
     use super::any_newer;
 
-    /// The block test agrees with Bevy's own, tick by tick, across wraparound, clamped ages and
-    /// a system that ran this very tick.
+    /// The block test agrees with Bevy's own, tick by tick and in long blocks, across
+    /// wraparound, clamped ages and a system that ran this very tick.
     #[test]
     fn the_block_change_test_is_bevys() {
         let edges = [
@@ -505,6 +514,22 @@ mod tests {
                         "tick {tick:?}, last run {last_run:?}, this run {this_run:?}"
                     );
                 }
+                // Blocks longer than a round of sixteen: the tick placed anywhere among old
+                // ones (or none) decides, in a round and in the rest past the last one.
+                let old = Tick::new(last_run.get());
+                for &age in ages.iter().step_by(7) {
+                    let tick = Tick::new(this_run.get().wrapping_sub(age));
+                    for position in [0, 5, 15, 16, 31, 32, 36] {
+                        let mut block = [old; 37];
+                        block[position] = tick;
+                        assert_eq!(
+                            any_newer(&block, last_run, this_run),
+                            tick.is_newer_than(last_run, this_run),
+                            "tick {tick:?} at {position}, last run {last_run:?}"
+                        );
+                    }
+                }
+                assert!(!any_newer(&[old; 37], last_run, this_run));
             }
         }
     }
