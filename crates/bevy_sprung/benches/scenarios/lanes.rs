@@ -87,6 +87,21 @@ fn by_spring([x, y, z]: [Vec4; 3]) -> [Vec3A; 4] {
     [m.x_axis, m.y_axis, m.z_axis, m.w_axis].map(Vec3A::from_vec4)
 }
 
+/// Four springs' `f(spring)` as the lanes of one vector.
+#[expect(
+    clippy::inline_always,
+    reason = "the model's loop body, measured inlined"
+)]
+#[inline(always)]
+fn gather<T>(springs: &[T; 4], f: impl Fn(&T) -> f32) -> Vec4 {
+    Vec4::new(
+        f(&springs[0]),
+        f(&springs[1]),
+        f(&springs[2]),
+        f(&springs[3]),
+    )
+}
+
 /// `(x² + y²) + z²` over the lanes: `Vec3A::length_squared`'s order.
 #[expect(
     clippy::inline_always,
@@ -122,6 +137,21 @@ fn step_one(motion: &mut ModelMotion, transform: &mut Transform, increments: Vec
     moved
 }
 
+/// [`step_one`] for each row, marking the translations that changed.
+fn step_each(
+    motions: &mut [ModelMotion],
+    transforms: &mut [Transform],
+    written: &mut [Tick],
+    increments: Vec4,
+    this_run: Tick,
+) {
+    for ((motion, transform), written) in motions.iter_mut().zip(transforms).zip(written) {
+        if step_one(motion, transform, increments) {
+            *written = this_run;
+        }
+    }
+}
+
 /// Four usual springs at once, or `false` (nothing changed) if one of them is not usual.
 #[expect(
     clippy::inline_always,
@@ -137,22 +167,8 @@ fn step_four(
 ) -> bool {
     let m = Mat4::from_cols(increments[0], increments[1], increments[2], increments[3]).transpose();
     let (d00, d01, d10, d11) = (m.x_axis, m.y_axis, m.z_axis, m.w_axis);
-    let current = [0, 1, 2].map(|c| {
-        Vec4::new(
-            transforms[0].translation[c],
-            transforms[1].translation[c],
-            transforms[2].translation[c],
-            transforms[3].translation[c],
-        )
-    });
-    let target = [0, 1, 2].map(|c| {
-        Vec4::new(
-            motions[0].target[c],
-            motions[1].target[c],
-            motions[2].target[c],
-            motions[3].target[c],
-        )
-    });
+    let current = [0, 1, 2].map(|c| gather(transforms, |t| t.translation[c]));
+    let target = [0, 1, 2].map(|c| gather(motions, |m| m.target[c]));
     let offset = by_component(motions.each_ref().map(|m| m.offset));
     let remainder = by_component(motions.each_ref().map(|m| m.remainder));
     let velocity = by_component(motions.each_ref().map(|m| m.velocity));
@@ -174,34 +190,11 @@ fn step_four(
         speed[c] = v + (v * d11 + y * d10);
     }
     let (offset_squared, speed_squared) = (squared(after), squared(speed));
-    let tolerances = Mat4::from_cols(
-        Vec4::new(
-            motions[0].rest_squared.0,
-            motions[0].rest_squared.1,
-            0.0,
-            0.0,
-        ),
-        Vec4::new(
-            motions[1].rest_squared.0,
-            motions[1].rest_squared.1,
-            0.0,
-            0.0,
-        ),
-        Vec4::new(
-            motions[2].rest_squared.0,
-            motions[2].rest_squared.1,
-            0.0,
-            0.0,
-        ),
-        Vec4::new(
-            motions[3].rest_squared.0,
-            motions[3].rest_squared.1,
-            0.0,
-            0.0,
-        ),
-    )
-    .transpose();
-    let at_rest = offset_squared.cmple(tolerances.x_axis) & speed_squared.cmple(tolerances.y_axis);
+    let (offset_tolerance, speed_tolerance) = (
+        gather(motions, |m| m.rest_squared.0),
+        gather(motions, |m| m.rest_squared.1),
+    );
+    let at_rest = offset_squared.cmple(offset_tolerance) & speed_squared.cmple(speed_tolerance);
     let finite = (offset_squared + speed_squared).cmplt(Vec4::INFINITY);
     if (unwritten | at_rest.bitmask() | (!finite.bitmask() & 0xf)) != 0 {
         return false;
@@ -258,7 +251,7 @@ pub(crate) fn lanes_model(
         let written = transform_ticks.changed_mut();
         let (motion_groups, motion_rest) = motions.as_chunks_mut::<4>();
         let (transform_groups, transform_rest) = transforms.as_chunks_mut::<4>();
-        let (changed_groups, changed_rest) = changed.as_chunks::<4>();
+        let (changed_groups, _) = changed.as_chunks::<4>();
         let (written_groups, written_rest) = written.as_chunks_mut::<4>();
         let groups = motion_groups
             .iter_mut()
@@ -280,26 +273,15 @@ pub(crate) fn lanes_model(
             {
                 continue;
             }
-            for ((motion, transform), written) in motions
-                .iter_mut()
-                .zip(transforms.iter_mut())
-                .zip(written.iter_mut())
-            {
-                if step_one(motion, transform, table[0]) {
-                    *written = this_run;
-                }
-            }
+            step_each(motions, transforms, written, table[0], this_run);
         }
-        let _ = changed_rest;
-        for ((motion, transform), written) in motion_rest
-            .iter_mut()
-            .zip(transform_rest.iter_mut())
-            .zip(written_rest.iter_mut())
-        {
-            if step_one(motion, transform, table[0]) {
-                *written = this_run;
-            }
-        }
+        step_each(
+            motion_rest,
+            transform_rest,
+            written_rest,
+            table[0],
+            this_run,
+        );
         motion_ticks.mark_all_as_changed();
     }
 }

@@ -105,7 +105,7 @@ pub(crate) fn step_springs<P: SpringProperty>(
     let threads = scope_threads();
     if let Ok(tables) = springs.contiguous_iter_mut() {
         // Each table's columns as slices, the step inlined into a plain loop over them, change
-        // ticks read and written directly; on the compute pool's threads if it has several.
+        // ticks read and written directly; split over the scope's threads if there are several.
         for (entities, configs, motions, components) in tables {
             step_table(
                 (entities, configs, motions, components),
@@ -215,7 +215,8 @@ type StepContext<'a> = (
 const STEP_CHUNK: usize = 2048;
 
 /// The awake, visible springs of one table, from its columns: [`step_entity`] for each, without
-/// the per-entity `Mut` wrappers, in chunks on the compute pool's `threads` if there are several.
+/// the per-entity `Mut` wrappers, in chunks on a compute-pool scope's `threads` (the pool's and
+/// this one, [`scope_threads`]) if there are several.
 /// Every motion is marked changed (it was stepped), a property only where it moved; the
 /// configurations are read where they changed, and not marked.
 fn step_table<P: SpringProperty>(

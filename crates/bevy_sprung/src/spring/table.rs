@@ -302,7 +302,8 @@ impl TransitionTable {
     /// Makes every slot's increments those over its clock's time step in `steps`. A frame with
     /// the same time steps as the last costs one vector comparison per four slots; with new
     /// ones (Bevy's virtual time varies from frame to frame), the slots are extended four at a
-    /// time or recomputed, split over the compute pool's threads when it has more than one.
+    /// time or recomputed, split over a compute-pool scope's threads (the pool's and this one)
+    /// when there are several.
     pub(crate) fn prepare(&mut self, steps: FrameSteps) {
         // The same steps as the frame before (a fixed time step): nothing to look at.
         if self
