@@ -189,6 +189,57 @@ fn many_springs_match_one_spring_each() {
     }
 }
 
+/// Every preset toward targets from 1e3 to 1e6 away, in `f32`, at 144 and 360 fps, in a scene
+/// large enough (3000 springs, more than a chunk of 2048) that it steps in chunks split over the
+/// compute pool's thread and the calling one: every spring arrives, asleep exactly on its target,
+/// within 40 seconds.
+#[test]
+fn thousands_of_springs_toward_large_targets_at_high_frame_rates_all_arrive() {
+    const PRESETS: [fn() -> Spring; 8] = [
+        Spring::gentle,
+        Spring::wobbly,
+        Spring::stiff,
+        Spring::slow,
+        Spring::molasses,
+        Spring::smooth,
+        Spring::snappy,
+        Spring::bouncy,
+    ];
+    for fps in [144, 360] {
+        let mut app = app(fps);
+        assert!(bevy::tasks::ComputeTaskPool::get().thread_num() >= 1);
+        let springs: Vec<(Entity, Vec3)> = (0..3000_u16)
+            .map(|i| {
+                let magnitude = 10f32.powi(3 + i32::from(i % 4));
+                let angle = f32::from(i) * 0.618_034 * core::f32::consts::TAU;
+                let target = magnitude * Vec3::new(angle.cos(), angle.sin(), 0.3);
+                let spring = PRESETS[usize::from(i) % PRESETS.len()]();
+                (
+                    spawn_translation(&mut app, spring, Vec3::ZERO, target),
+                    target,
+                )
+            })
+            .collect();
+        let mut frames = 0;
+        while frames < 40 * fps
+            && !springs
+                .iter()
+                .all(|(entity, _)| asleep::<Translation>(&app, *entity))
+        {
+            run(&mut app, fps);
+            frames += fps;
+        }
+        println!("{fps} fps: every spring asleep after {frames} frames");
+        for (entity, target) in springs {
+            assert!(
+                asleep::<Translation>(&app, entity),
+                "{fps} fps: {target} not asleep"
+            );
+            assert_eq!(translation(&app, entity), target, "{fps} fps");
+        }
+    }
+}
+
 /// A slow spring far from its target moves by less than its offset's last digit each frame
 /// (here from 1e5 away with a half-life of 400 s at 240 fps): added to the offset, each step
 /// would round away and the spring would not start. It follows the exact motion from the first
