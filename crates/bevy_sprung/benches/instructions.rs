@@ -79,6 +79,31 @@ fn one(method: Method, count: usize, frames: u64, vary: bool) {
     method.check(world, count, since);
 }
 
+/// One scene's frames timed one by one (task pools as the criterion suite sets them): the
+/// fastest and the median frame, for A/B comparisons that a busy machine's slow frames do not
+/// blur.
+fn time(method: Method, count: usize, frames: u64, vary: bool) {
+    let mut app = method.app(count, false);
+    measured_warm_up(&mut app, method, vary);
+    let schedule = method.schedule();
+    let mut times: Vec<f64> = (0..frames)
+        .map(|frame| {
+            let world = app.world_mut();
+            Method::set_dt(world, if vary { varying_dt(frame) } else { FRAME });
+            let start = std::time::Instant::now();
+            world.run_schedule(schedule);
+            start.elapsed().as_secs_f64() * 1e6
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    println!(
+        "{:<28} fastest {:8.1} µs  median {:8.1} µs",
+        method.name(),
+        times[0],
+        times[times.len() / 2]
+    );
+}
+
 #[inline(never)]
 fn measured_warm_up(app: &mut App, method: Method, vary: bool) {
     let schedule = method.schedule();
@@ -177,6 +202,15 @@ fn main() {
         let method = method_named(&args[1]);
         one(
             method,
+            args[2].parse().expect("a count"),
+            args[3].parse().expect("a frame count"),
+            args[4].parse().expect("true or false"),
+        );
+        return;
+    }
+    if args.first().map(String::as_str) == Some("time") {
+        time(
+            method_named(&args[1]),
             args[2].parse().expect("a count"),
             args[3].parse().expect("a frame count"),
             args[4].parse().expect("true or false"),
