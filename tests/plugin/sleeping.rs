@@ -67,6 +67,53 @@ fn a_sleeping_spring_writes_nothing_and_is_not_iterated() {
     assert_eq!(translation(&app, resting), Vec3::X);
 }
 
+/// The same in a scene large enough (3000 springs, more than a chunk of 2048) that it steps in
+/// chunks split over the compute pool's thread and the calling one, which mark the motions and
+/// the properties they step: every moving spring is marked stepped and its `Transform`
+/// changed, no sleeping one.
+#[test]
+fn springs_stepped_in_chunks_are_all_marked_and_sleeping_ones_not() {
+    let mut app = recording_app();
+    assert!(bevy::tasks::ComputeTaskPool::get().thread_num() >= 1);
+    let (mut resting, mut moving) = (Vec::new(), Vec::new());
+    for i in 0..3000_u16 {
+        let target = Vec3::splat(f32::from(i));
+        if i % 3 == 0 {
+            resting.push(spawn_translation(
+                &mut app,
+                Spring::stiff(),
+                Vec3::ZERO,
+                target,
+            ));
+        } else {
+            let far = target * 1e3;
+            moving.push(spawn_translation(
+                &mut app,
+                Spring::molasses(),
+                Vec3::ZERO,
+                far,
+            ));
+        }
+    }
+    run(&mut app, 240);
+    assert!(
+        resting
+            .iter()
+            .all(|&entity| asleep::<Translation>(&app, entity))
+    );
+    for _ in 0..3 {
+        app.update();
+        let transforms = &app.world().resource::<ChangedTransforms>().0;
+        let springs = &app.world().resource::<ChangedSprings>().0;
+        assert_eq!(springs.len(), moving.len(), "stepped springs");
+        assert_eq!(transforms.len(), moving.len(), "changed transforms");
+        let springs: std::collections::HashSet<Entity> = springs.iter().copied().collect();
+        let transforms: std::collections::HashSet<Entity> = transforms.iter().copied().collect();
+        assert!(moving.iter().all(|entity| springs.contains(entity)));
+        assert!(moving.iter().all(|entity| transforms.contains(entity)));
+    }
+}
+
 #[test]
 fn setting_the_same_target_does_not_wake_it() {
     let mut app = recording_app();

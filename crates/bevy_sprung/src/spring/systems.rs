@@ -236,6 +236,9 @@ fn step_table<P: SpringProperty>(
     let ticks = (config_ticks.last_run(), config_ticks.this_run());
     let config_changed = config_ticks.changed();
     let component_changed = component_ticks.changed_mut();
+    // Every stepped motion is changed: marked chunk by chunk on the threads that step them,
+    // not in a pass of its own on this thread afterwards (a 400 kB write at 100 000 springs).
+    let motion_changed = motion_ticks.changed_mut();
     // Chunks that give every thread a few, so that one slow chunk does not hold up the rest.
     // (A pool of no threads runs its tasks on this one.)
     let chunk = (motions.len() / (4 * threads.max(1))).max(STEP_CHUNK);
@@ -246,12 +249,16 @@ fn step_table<P: SpringProperty>(
                 .zip(configs.chunks_mut(chunk).zip(motions.chunks_mut(chunk)))
                 .zip(components.chunks_mut(chunk))
                 .zip(config_changed.chunks(chunk))
-                .zip(component_changed.chunks_mut(chunk));
-            for ((((entities, rows), components), config_changed), component_changed) in chunks {
+                .zip(
+                    component_changed
+                        .chunks_mut(chunk)
+                        .zip(motion_changed.chunks_mut(chunk)),
+                );
+            for ((((entities, rows), components), config_changed), changed) in chunks {
                 scope.spawn(async move {
                     step_rows(
                         (entities, rows, components),
-                        (config_changed, component_changed, ticks),
+                        (config_changed, changed, ticks),
                         context,
                     );
                 });
@@ -260,16 +267,18 @@ fn step_table<P: SpringProperty>(
     } else {
         step_rows(
             (entities, (configs, motions), components),
-            (config_changed, component_changed, ticks),
+            (config_changed, (component_changed, motion_changed), ticks),
             context,
         );
     }
-    motion_ticks.mark_all_as_changed();
-    mark_changed_by(&mut component_ticks);
+    mark_changed_by(&mut motion_ticks, |_| true);
+    let this_run = component_ticks.this_run();
+    mark_changed_by(&mut component_ticks, |tick| tick == this_run);
 }
 
 /// [`step_table`]'s loop over rows: the configurations' changed ticks are read (one changed
-/// since the last run was touched by something else), the properties' written where they moved.
+/// since the last run was touched by something else), the properties' written where they
+/// moved, the motions' all written.
 #[inline(never)]
 fn step_rows<P: SpringProperty>(
     (entities, (configs, motions), components): (
@@ -277,9 +286,14 @@ fn step_rows<P: SpringProperty>(
         (&mut [PropertySpring<P>], &mut [SpringMotion<P>]),
         &mut [P::Component],
     ),
-    (config_changed, component_changed, (last_run, this_run)): (&[Tick], &mut [Tick], (Tick, Tick)),
+    (config_changed, (component_changed, motion_changed), (last_run, this_run)): (
+        &[Tick],
+        (&mut [Tick], &mut [Tick]),
+        (Tick, Tick),
+    ),
     (steps, table, caches, commands): StepContext,
 ) {
+    motion_changed.fill(this_run);
     let rows = configs
         .iter_mut()
         .zip(motions.iter_mut())
@@ -303,19 +317,15 @@ fn step_rows<P: SpringProperty>(
 }
 
 /// Where Bevy tracks change locations (feature `track_location`), records this system as what
-/// changed the rows it marked changed in this run (`this_run` is unique to it).
+/// changed the rows it marked changed in this run (those whose change tick is `marked`; the
+/// system's `this_run` is unique to it).
 #[cold]
 #[track_caller]
-fn mark_changed_by(ticks: &mut ContiguousComponentTicksMut) {
+fn mark_changed_by(ticks: &mut ContiguousComponentTicksMut, marked: impl Fn(Tick) -> bool) {
     if ticks.changed_by().into_option().is_none() {
         return;
     }
-    let this_run = ticks.this_run();
-    let marked: Vec<bool> = ticks
-        .changed()
-        .iter()
-        .map(|tick| *tick == this_run)
-        .collect();
+    let marked: Vec<bool> = ticks.changed().iter().map(|tick| marked(*tick)).collect();
     let caller = MaybeLocation::caller();
     ticks
         .changed_by_mut()
