@@ -31,6 +31,7 @@ fn scenes() -> Vec<(Method, bool)> {
         (Method::Springs { springs: 1 }, false),
         (Method::EulerUiScale, false),
         (Method::UiScaleSprings, false),
+        (Method::UiTranslationSprings, false),
         (Method::Springs { springs: 1 }, true),
         (Method::Springs { springs: 8 }, true),
         (Method::Springs { springs: 0 }, true),

@@ -83,7 +83,11 @@ fn ui(c: &mut Criterion) {
     schedule_group(
         c,
         "ui",
-        &[Method::EulerUiScale, Method::UiScaleSprings],
+        &[
+            Method::EulerUiScale,
+            Method::UiScaleSprings,
+            Method::UiTranslationSprings,
+        ],
         false,
     );
 }

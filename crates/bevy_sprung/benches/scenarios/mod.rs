@@ -124,6 +124,9 @@ pub(crate) enum Method {
     SpringsAtRest,
     /// [`UiScaleSpring`]s: a UI property.
     UiScaleSprings,
+    /// [`UiTranslationSpring`]s: a UI property in `Val` lengths (pixels), a hover lift or a
+    /// slide-in.
+    UiTranslationSprings,
     /// spring_damper 0.1.1's `TranslationSpring`, with `springs` distinct half-lives.
     SpringDamper {
         /// Distinct half-lives, 0 for one per entity.
@@ -156,6 +159,7 @@ impl Method {
             Self::Springs { springs } => format!("sprung_{springs}_springs"),
             Self::SpringsAtRest => "sprung_at_rest".into(),
             Self::UiScaleSprings => "sprung_ui_scale".into(),
+            Self::UiTranslationSprings => "sprung_ui_translation".into(),
             Self::SpringDamper { springs: 1 } => "spring_damper_shared".into(),
             Self::SpringDamper { springs: 0 } => "spring_damper_per_entity".into(),
             Self::SpringDamper { springs } => format!("spring_damper_{springs}_springs"),
@@ -176,6 +180,7 @@ impl Method {
             Self::Springs { .. }
             | Self::SpringsAtRest
             | Self::UiScaleSprings
+            | Self::UiTranslationSprings
             | Self::SpringDamper { .. } => PostUpdate.intern(),
             Self::Euler
             | Self::EulerUiScale
@@ -199,7 +204,10 @@ impl Method {
             app.add_plugins(TransformPlugin);
         }
         match self {
-            Self::Springs { .. } | Self::SpringsAtRest | Self::UiScaleSprings => {
+            Self::Springs { .. }
+            | Self::SpringsAtRest
+            | Self::UiScaleSprings
+            | Self::UiTranslationSprings => {
                 app.add_plugins(SpringPlugin::default());
             }
             Self::SpringDamper { .. } => {
@@ -260,6 +268,18 @@ impl Method {
                     (
                         UiTransform::default(),
                         UiScaleSpring::new(sprung_spring(HALF_LIFE), target(i).truncate()),
+                    )
+                }));
+            }
+            Self::UiTranslationSprings => {
+                world.spawn_batch((0..count).map(|i| {
+                    let target = target(i);
+                    (
+                        UiTransform::default(),
+                        UiTranslationSpring::new(
+                            sprung_spring(HALF_LIFE),
+                            Val2::px(target.x, target.y),
+                        ),
                     )
                 }));
             }
@@ -340,7 +360,7 @@ impl Method {
     ) {
         let now = world.read_change_tick();
         let written = match self {
-            Self::UiScaleSprings | Self::EulerUiScale => world
+            Self::UiScaleSprings | Self::UiTranslationSprings | Self::EulerUiScale => world
                 .query::<Ref<UiTransform>>()
                 .iter(world)
                 .filter(|t| t.last_changed().is_newer_than(since, now))
@@ -357,6 +377,10 @@ impl Method {
             .count()
             + world
                 .query_filtered::<(), With<SpringAsleep<bevy_sprung::ui::UiTransformScale>>>()
+                .iter(world)
+                .count()
+            + world
+                .query_filtered::<(), With<SpringAsleep<bevy_sprung::ui::UiTransformTranslation>>>()
                 .iter(world)
                 .count();
         if self == Self::SpringsAtRest {
