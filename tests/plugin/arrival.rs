@@ -12,24 +12,10 @@ use bevy_sprung::ui::{NodeLeft, NodeLeftSpring, UiTransformTranslation};
 use bevy_sprung::{color::BackgroundTint, prelude::*};
 use sprung::Scalar;
 
-use crate::harness::app;
+use crate::harness::{app, presets};
 
 /// The frame rates users run at.
 const FRAME_RATES: [u32; 6] = [30, 60, 120, 144, 240, 360];
-
-/// Every preset.
-fn presets() -> [(&'static str, Spring); 8] {
-    [
-        ("gentle", Spring::gentle()),
-        ("wobbly", Spring::wobbly()),
-        ("stiff", Spring::stiff()),
-        ("slow", Spring::slow()),
-        ("molasses", Spring::molasses()),
-        ("smooth", Spring::smooth()),
-        ("snappy", Spring::snappy()),
-        ("bouncy", Spring::bouncy()),
-    ]
-}
 
 /// Positions in a large 2D world or pixel UI: both signs, non-round, `1e-3` to `1e6`.
 const TARGETS: [f32; 10] = [

@@ -4,7 +4,9 @@ use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 use sprung::SpringState;
 
-use crate::harness::{app, asleep, elapsed, exact, motion, run, spawn_translation, translation};
+use crate::harness::{
+    app, asleep, elapsed, exact, motion, presets, run, spawn_translation, translation,
+};
 
 #[test]
 fn reaches_and_settles_exactly_on_its_target() {
@@ -195,16 +197,6 @@ fn many_springs_match_one_spring_each() {
 /// within 40 seconds.
 #[test]
 fn thousands_of_springs_toward_large_targets_at_high_frame_rates_all_arrive() {
-    const PRESETS: [fn() -> Spring; 8] = [
-        Spring::gentle,
-        Spring::wobbly,
-        Spring::stiff,
-        Spring::slow,
-        Spring::molasses,
-        Spring::smooth,
-        Spring::snappy,
-        Spring::bouncy,
-    ];
     for fps in [144, 360] {
         let mut app = app(fps);
         assert!(bevy::tasks::ComputeTaskPool::get().thread_num() >= 1);
@@ -213,7 +205,8 @@ fn thousands_of_springs_toward_large_targets_at_high_frame_rates_all_arrive() {
                 let magnitude = 10f32.powi(3 + i32::from(i % 4));
                 let angle = f32::from(i) * 0.618_034 * core::f32::consts::TAU;
                 let target = magnitude * Vec3::new(angle.cos(), angle.sin(), 0.3);
-                let spring = PRESETS[usize::from(i) % PRESETS.len()]();
+                let presets = presets();
+                let spring = presets[usize::from(i) % presets.len()].1;
                 (
                     spawn_translation(&mut app, spring, Vec3::ZERO, target),
                     target,

@@ -11,7 +11,7 @@ use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
 use bevy_sprung::ui::{NodeLeft, NodeLeftSpring};
 
-use crate::harness::app;
+use crate::harness::{app, presets};
 
 /// A small, seeded generator (`SplitMix64`).
 struct Random(u64);
@@ -73,24 +73,13 @@ fn sleeping(app: &mut App) -> (usize, usize) {
     (asleep, 3 * 16)
 }
 
-/// Every preset.
-const PRESETS: [fn() -> Spring; 8] = [
-    Spring::gentle,
-    Spring::wobbly,
-    Spring::stiff,
-    Spring::slow,
-    Spring::molasses,
-    Spring::smooth,
-    Spring::snappy,
-    Spring::bouncy,
-];
-
 /// Sixteen entities, each with a translation, a UI length and a spin spring of one preset, and
 /// a scale from pixels of a small UI to a large 2D world.
 fn spawn_entities(app: &mut App) -> Vec<(Entity, f32)> {
     (0..16)
         .map(|i| {
-            let spring = PRESETS[i % PRESETS.len()]();
+            let presets = presets();
+            let spring = presets[i % presets.len()].1;
             let scale = 10f32.powi(i32::try_from(i % 6).unwrap());
             let entity = app
                 .world_mut()
