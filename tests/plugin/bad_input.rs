@@ -169,6 +169,32 @@ fn a_step_that_overflows_keeps_a_finite_state_and_comes_back() {
     assert!(finite_until_rest(&mut app, entity, target));
 }
 
+/// States on both sides of where the usual step stops and the general one (which redoes an
+/// overflowing step) takes over, far beyond any scene: a stiff, nearly undamped spring and an
+/// ordinary one, from `10¹⁵` to `10³⁸` with velocities as large, stay finite every frame and
+/// arrive.
+#[test]
+fn states_across_the_usual_steps_range_stay_finite_and_arrive() {
+    let stiff = Spring::from_natural_frequency(1.0e4, 0.05).unwrap();
+    for spring in [Spring::snappy(), stiff] {
+        for start in [1.0e15_f32, 1.0e18, 3.0e19, 1.0e25, 1.0e38] {
+            for speed in [0.0, start, -start] {
+                let mut app = app(60);
+                let target = Vec3::new(-1000.0, 0.0, 5.0);
+                let entity = spawn_translation(&mut app, spring, Vec3::X * start, target);
+                app.world_mut()
+                    .get_mut::<TranslationSpring>(entity)
+                    .unwrap()
+                    .set_velocity(Vec3::new(speed, -speed, 0.0));
+                assert!(
+                    finite_until_rest(&mut app, entity, target),
+                    "{spring:?} from {start} at {speed}"
+                );
+            }
+        }
+    }
+}
+
 /// Something writes NaN into the sprung `Transform` itself: the spring restores it from its own
 /// state instead of reading the NaN, and arrives.
 #[test]

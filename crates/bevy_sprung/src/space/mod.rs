@@ -212,6 +212,10 @@ pub trait SpringSpace: Send + Sync + 'static {
     /// Keeps a step's result in range: `before` is the offset at the start of the step toward
     /// `target`, `after` the offset and `velocity` the velocity at its end. The default changes
     /// nothing; [`NeverThroughZero`] stops a value at zero.
+    ///
+    /// For a finite `after` and `velocity` it must return finite ones for which
+    /// [`at_carried`](Self::at_carried) gives a valid value: the plugin's usual step bounds
+    /// the step's result, and does not test it again after this.
     #[inline]
     #[must_use]
     fn constrain(

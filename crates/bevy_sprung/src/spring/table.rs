@@ -272,6 +272,23 @@ pub(crate) struct TransitionTable {
     /// Whether any spring asked for a slot since the last [`finish`](Self::finish): a frame
     /// without requests does not visit the per-thread buffers (about 950 instructions).
     requested: AtomicBool,
+    /// The squared state length below which one step by any slot's increments stays far
+    /// inside `f32` (see [`step_limit`](Self::step_limit)).
+    step_limit: f32,
+}
+
+/// `2¹²⁶`: the squared length a step's result stays below, a factor of 4 under `f32::MAX`
+/// for the rounding of the step's few operations.
+const STEP_RESULT_BOUND: f32 = 85_070_591_730_234_615_865_843_651_857_942_052_864.0;
+
+/// The largest sum of absolute increments in a block of four slots' `increments` (by lane):
+/// a bound on every row sum `|dᵢ₀| + |dᵢ₁|` of each of the four; infinite if any is NaN.
+#[inline]
+fn increments_bound(increments: &[Vec4; 4]) -> f32 {
+    let [a, b, c, d] = increments.map(Vec4::abs);
+    // NaN-propagating sums (a maximum would drop a NaN).
+    let sum = ((a + b) + (c + d)).element_sum();
+    if sum.is_nan() { f32::INFINITY } else { sum }
 }
 
 /// The threads that run the tasks of a compute-pool scope: the pool's, and the thread that
@@ -331,35 +348,56 @@ impl TransitionTable {
     fn prepare_with(&mut self, steps_of: impl Fn(&[u8; 4]) -> Vec4 + Copy + Send) {
         // The steps copied into the closure: captured by reference, a slot cost 4 instructions
         // more (callgrind) where the closure was not inlined.
+        // Each chunk returns the largest bound of its blocks' increments.
         let prepare = move |(lanes, clocks): (&mut [AnchorLanes], &[[u8; 4]]),
                             increments: &mut [Vec4],
                             slots: &[Slot]| {
             let (increments, _) = increments.as_chunks_mut::<4>();
             let blocks = lanes.iter_mut().zip(clocks).zip(increments);
+            let mut bound = 0.0_f32;
             // The slots by block index: only a lane that needs an exact transition reads one.
             for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
                 lanes.prepare(increments, (&slots, block), steps_of(clocks));
+                bound = bound.max(increments_bound(increments));
             }
+            bound
         };
-        if scope_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
-            ComputeTaskPool::get().scope(|scope| {
-                let chunks = self
-                    .lanes
-                    .chunks_mut(PREPARE_CHUNK / 4)
-                    .zip(self.lane_clocks.chunks(PREPARE_CHUNK / 4))
-                    .zip(self.increments.chunks_mut(PREPARE_CHUNK))
-                    .zip(self.slots.chunks(PREPARE_CHUNK));
-                for (((lanes, clocks), increments), slots) in chunks {
-                    scope.spawn(async move { prepare((lanes, clocks), increments, slots) });
-                }
-            });
+        let bound = if scope_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
+            ComputeTaskPool::get()
+                .scope(|scope| {
+                    let chunks = self
+                        .lanes
+                        .chunks_mut(PREPARE_CHUNK / 4)
+                        .zip(self.lane_clocks.chunks(PREPARE_CHUNK / 4))
+                        .zip(self.increments.chunks_mut(PREPARE_CHUNK))
+                        .zip(self.slots.chunks(PREPARE_CHUNK));
+                    for (((lanes, clocks), increments), slots) in chunks {
+                        scope.spawn(async move { prepare((lanes, clocks), increments, slots) });
+                    }
+                })
+                .into_iter()
+                .fold(0.0, f32::max)
         } else {
             prepare(
                 (&mut self.lanes, &self.lane_clocks),
                 &mut self.increments,
                 &self.slots,
-            );
-        }
+            )
+        };
+        // A state of squared length below the limit has both parts shorter than its root; a
+        // step adds at most `bound` times that to each: the result is shorter than
+        // `(1 + bound)·√limit`, whose square is the result bound (0 for an infinite bound).
+        self.step_limit = STEP_RESULT_BOUND / ((1.0 + bound) * (1.0 + bound));
+    }
+
+    /// The squared length of state `|y|² + |v|²` below which one step by any slot's prepared
+    /// increments gives a result of squared length below `2¹²⁶`: finite, and far from
+    /// overflowing, so the step needs no test of its result. 0 (nothing is below it) before
+    /// the first preparation and when an increment is not finite.
+    #[inline]
+    #[must_use]
+    pub(crate) fn step_limit(&self) -> f32 {
+        self.step_limit
     }
 
     /// The increments of the slot with `ticket` (prepared for this frame), if the table has
@@ -465,7 +503,7 @@ mod tests {
     use bevy::math::Vec4;
     use sprung::Spring;
 
-    use super::{Anchor, AnchorLanes, TransitionTable};
+    use super::{Anchor, AnchorLanes, STEP_RESULT_BOUND, TransitionTable, increments_bound};
     use crate::clock::FrameSteps;
 
     /// `anchor`'s increments over `dt`, if within reach, from lane `lane` of lanes holding it
@@ -703,5 +741,81 @@ mod tests {
             let worst = worst_prepared_error(&table, &second, steps);
             assert!(worst < 8.0, "{worst} u");
         }
+    }
+
+    /// A step from a state below the table's limit, by any slot's increments, gives a result
+    /// of squared length below `2¹²⁶`, so the usual step needs no test of its result: for
+    /// springs from slow to absurdly stiff (ω = 10⁶) and nearly undamped to heavily
+    /// over-damped, at steps from 360 fps to a quarter-second hitch, and states on the limit
+    /// in every direction of offset and velocity. Ordinary springs leave any scene's states
+    /// (below `10¹⁵`) far inside it.
+    #[test]
+    fn a_step_from_below_the_limit_stays_finite() {
+        use bevy::math::Vec3A;
+
+        let springs: Vec<(Spring<f32>, u8)> = [0.1_f32, 8.0, 300.0, 1.0e4, 1.0e6]
+            .into_iter()
+            .flat_map(|omega| {
+                [0.01_f32, 1.0, 50.0]
+                    .map(|zeta| (Spring::from_natural_frequency(omega, zeta).unwrap(), 2))
+            })
+            .collect();
+        let mut table = TransitionTable::default();
+        assert_eq!(
+            table.step_limit().to_bits(),
+            0.0_f32.to_bits(),
+            "nothing is stepped before a preparation"
+        );
+        for (spring, clock) in &springs {
+            table.request(spring, *clock);
+        }
+        table.finish(springs.len());
+        let directions = [
+            Vec3A::X,
+            Vec3A::NEG_X,
+            Vec3A::ONE.normalize(),
+            -Vec3A::ONE.normalize(),
+        ];
+        for dt in [1.0 / 360.0, 1.0 / 60.0, 0.25] {
+            table.prepare(FrameSteps::all(dt));
+            let limit = table.step_limit();
+            assert!(limit > 0.0, "dt {dt}: the limit is {limit}");
+            // Both parts at the limit: the largest state below it.
+            let length = (limit / 2.0).sqrt();
+            for (spring, clock) in &springs {
+                let slot = table.lookup(spring, *clock).unwrap();
+                let [d00, d01, d10, d11] = table.increments(slot).unwrap().to_array();
+                for y in directions.map(|d| d * length) {
+                    for v in directions.map(|d| d * length) {
+                        let after = y + (y * d00 + v * d01);
+                        let velocity = v + (v * d11 + y * d10);
+                        for part in [after, velocity] {
+                            let squared = part.length_squared();
+                            assert!(squared < STEP_RESULT_BOUND, "{spring:?} dt {dt}: {part}");
+                        }
+                    }
+                }
+            }
+        }
+        // Ordinary springs only: any scene's states are far below the limit.
+        let mut ordinary = TransitionTable::default();
+        for (spring, clock) in &springs[..9] {
+            ordinary.request(spring, *clock);
+        }
+        ordinary.finish(9);
+        ordinary.prepare(FrameSteps::all(1.0 / 60.0));
+        assert!(ordinary.step_limit() > 1.0e30, "{}", ordinary.step_limit());
+        // An increment that is not finite makes the bound infinite, and the limit 0.
+        let nan = [
+            Vec4::ONE,
+            Vec4::new(0.0, f32::NAN, 0.0, 0.0),
+            Vec4::ONE,
+            Vec4::ONE,
+        ];
+        assert_eq!(increments_bound(&nan).to_bits(), f32::INFINITY.to_bits());
+        assert_eq!(
+            increments_bound(&[Vec4::ONE; 4]).to_bits(),
+            16.0_f32.to_bits()
+        );
     }
 }
