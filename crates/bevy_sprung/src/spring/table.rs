@@ -191,16 +191,25 @@ impl AnchorLanes {
     /// vector multiply-adds per four slots), or computed exactly where out of reach. The
     /// anchors are only read unless one is out of reach: a frame's preparation streams them
     /// and writes the increments, nothing else.
+    /// Returns each slot's sum of absolute increments, a lane each (see [`IncrementsBound`]).
     #[inline]
-    fn prepare(&mut self, increments: &mut [Vec4; 4], (slots, block): (&&[Slot], usize), dt: Vec4) {
+    fn prepare(
+        &mut self,
+        increments: &mut [Vec4; 4],
+        (slots, block): (&&[Slot], usize),
+        dt: Vec4,
+    ) -> Vec4 {
         let (rows, within) = self.increments(dt);
         if within.all() {
             let by_lane = by_lane(rows);
             for (lane, increments) in increments.iter_mut().enumerate() {
                 *increments = by_lane.col(lane);
             }
+            let [d00, d01, d10, d11] = rows.map(Vec4::abs);
+            (d00 + d01) + (d10 + d11)
         } else {
             self.prepare_lanes(increments, slots, block, dt);
+            Vec4::from_array(increments.map(|lane| lane.abs().element_sum()))
         }
     }
 
@@ -281,14 +290,37 @@ pub(crate) struct TransitionTable {
 /// for the rounding of the step's few operations.
 const STEP_RESULT_BOUND: f32 = 85_070_591_730_234_615_865_843_651_857_942_052_864.0;
 
-/// The largest sum of absolute increments in a block of four slots' `increments` (by lane):
-/// a bound on every row sum `|dᵢ₀| + |dᵢ₁|` of each of the four; infinite if any is NaN.
-#[inline]
-fn increments_bound(increments: &[Vec4; 4]) -> f32 {
-    let [a, b, c, d] = increments.map(Vec4::abs);
-    // NaN-propagating sums (a maximum would drop a NaN).
-    let sum = ((a + b) + (c + d)).element_sum();
-    if sum.is_nan() { f32::INFINITY } else { sum }
+/// The largest sum of a slot's absolute increments `|d₀₀| + |d₀₁| + |d₁₀| + |d₁₁|` among the
+/// slots it has seen (four lanes at a time): a bound on every row sum `|dᵢ₀| + |dᵢ₁|`.
+#[derive(Clone, Copy, Debug)]
+struct IncrementsBound {
+    largest: Vec4,
+    /// The lanes where a sum was NaN (a maximum would drop it).
+    nan: BVec4A,
+}
+
+impl IncrementsBound {
+    /// No slot seen.
+    const NONE: Self = Self {
+        largest: Vec4::ZERO,
+        nan: BVec4A::FALSE,
+    };
+
+    /// Takes in four slots' sums, a lane each.
+    #[inline]
+    fn include(&mut self, sums: Vec4) {
+        self.largest = self.largest.max(sums);
+        self.nan |= sums.is_nan_mask();
+    }
+
+    /// The bound: infinite if a sum was NaN.
+    fn value(self) -> f32 {
+        if self.nan.any() {
+            f32::INFINITY
+        } else {
+            self.largest.max_element()
+        }
+    }
 }
 
 /// The threads that run the tasks of a compute-pool scope: the pool's, and the thread that
@@ -354,13 +386,12 @@ impl TransitionTable {
                             slots: &[Slot]| {
             let (increments, _) = increments.as_chunks_mut::<4>();
             let blocks = lanes.iter_mut().zip(clocks).zip(increments);
-            let mut bound = 0.0_f32;
+            let mut bound = IncrementsBound::NONE;
             // The slots by block index: only a lane that needs an exact transition reads one.
             for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
-                lanes.prepare(increments, (&slots, block), steps_of(clocks));
-                bound = bound.max(increments_bound(increments));
+                bound.include(lanes.prepare(increments, (&slots, block), steps_of(clocks)));
             }
-            bound
+            bound.value()
         };
         let bound = if scope_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
             ComputeTaskPool::get()
@@ -503,7 +534,7 @@ mod tests {
     use bevy::math::Vec4;
     use sprung::Spring;
 
-    use super::{Anchor, AnchorLanes, STEP_RESULT_BOUND, TransitionTable, increments_bound};
+    use super::{Anchor, AnchorLanes, IncrementsBound, STEP_RESULT_BOUND, TransitionTable};
     use crate::clock::FrameSteps;
 
     /// `anchor`'s increments over `dt`, if within reach, from lane `lane` of lanes holding it
@@ -760,38 +791,50 @@ mod tests {
                     .map(|zeta| (Spring::from_natural_frequency(omega, zeta).unwrap(), 2))
             })
             .collect();
-        let mut table = TransitionTable::default();
         assert_eq!(
-            table.step_limit().to_bits(),
+            TransitionTable::default().step_limit().to_bits(),
             0.0_f32.to_bits(),
             "nothing is stepped before a preparation"
         );
-        for (spring, clock) in &springs {
-            table.request(spring, *clock);
-        }
-        table.finish(springs.len());
         let directions = [
             Vec3A::X,
             Vec3A::NEG_X,
             Vec3A::ONE.normalize(),
             -Vec3A::ONE.normalize(),
         ];
-        for dt in [1.0 / 360.0, 1.0 / 60.0, 0.25] {
-            table.prepare(FrameSteps::all(dt));
-            let limit = table.step_limit();
-            assert!(limit > 0.0, "dt {dt}: the limit is {limit}");
-            // Both parts at the limit: the largest state below it.
-            let length = (limit / 2.0).sqrt();
-            for (spring, clock) in &springs {
-                let slot = table.lookup(spring, *clock).unwrap();
-                let [d00, d01, d10, d11] = table.increments(slot).unwrap().to_array();
-                for y in directions.map(|d| d * length) {
-                    for v in directions.map(|d| d * length) {
-                        let after = y + (y * d00 + v * d01);
-                        let velocity = v + (v * d11 + y * d10);
-                        for part in [after, velocity] {
-                            let squared = part.length_squared();
-                            assert!(squared < STEP_RESULT_BOUND, "{spring:?} dt {dt}: {part}");
+        // Tables whose stiffest springs have ω = 300, 10⁴ and 10⁶: each limit is its own
+        // table's. Each step far from the last is computed exactly, each a hair from the last
+        // is extended from its anchor (where in reach): both give the bound.
+        for count in [9, 12, 15] {
+            let springs = &springs[..count];
+            let mut table = TransitionTable::default();
+            for (spring, clock) in springs {
+                table.request(spring, *clock);
+            }
+            table.finish(springs.len());
+            for dt in [
+                1.0 / 360.0,
+                1.0 / 60.0,
+                1.0 / 60.0 + 1.0e-8,
+                0.25,
+                0.25 + 1.0e-7,
+            ] {
+                table.prepare(FrameSteps::all(dt));
+                let limit = table.step_limit();
+                assert!(limit > 0.0, "dt {dt}: the limit is {limit}");
+                // Both parts at the limit: the largest state below it.
+                let length = (limit / 2.0).sqrt();
+                for (spring, clock) in springs {
+                    let slot = table.lookup(spring, *clock).unwrap();
+                    let [d00, d01, d10, d11] = table.increments(slot).unwrap().to_array();
+                    for y in directions.map(|d| d * length) {
+                        for v in directions.map(|d| d * length) {
+                            let after = y + (y * d00 + v * d01);
+                            let velocity = v + (v * d11 + y * d10);
+                            for part in [after, velocity] {
+                                let squared = part.length_squared();
+                                assert!(squared < STEP_RESULT_BOUND, "{spring:?} dt {dt}: {part}");
+                            }
                         }
                     }
                 }
@@ -806,16 +849,12 @@ mod tests {
         ordinary.prepare(FrameSteps::all(1.0 / 60.0));
         assert!(ordinary.step_limit() > 1.0e30, "{}", ordinary.step_limit());
         // An increment that is not finite makes the bound infinite, and the limit 0.
-        let nan = [
-            Vec4::ONE,
-            Vec4::new(0.0, f32::NAN, 0.0, 0.0),
-            Vec4::ONE,
-            Vec4::ONE,
-        ];
-        assert_eq!(increments_bound(&nan).to_bits(), f32::INFINITY.to_bits());
-        assert_eq!(
-            increments_bound(&[Vec4::ONE; 4]).to_bits(),
-            16.0_f32.to_bits()
-        );
+        let mut bound = IncrementsBound::NONE;
+        bound.include(Vec4::new(1.0, 4.0, 2.0, 0.0));
+        bound.include(Vec4::new(3.0, 0.0, 0.0, 0.0));
+        assert_eq!(bound.value().to_bits(), 4.0_f32.to_bits());
+        bound.include(Vec4::new(0.0, f32::NAN, 0.0, 0.0));
+        bound.include(Vec4::ONE);
+        assert_eq!(bound.value().to_bits(), f32::INFINITY.to_bits());
     }
 }
