@@ -12,7 +12,7 @@ use bevy_sprung::ui::{NodeLeft, NodeLeftSpring, UiTransformTranslation};
 use bevy_sprung::{color::BackgroundTint, prelude::*};
 use sprung::Scalar;
 
-use crate::harness::{app, presets};
+use crate::harness::app;
 
 /// The frame rates users run at.
 const FRAME_RATES: [u32; 6] = [30, 60, 120, 144, 240, 360];
@@ -63,7 +63,7 @@ fn spawn(
 /// Spawns, for every preset, springs on every property toward targets of every magnitude.
 fn spawn_cases(app: &mut App) -> HashMap<Entity, Case> {
     let mut cases = HashMap::new();
-    for (name, spring) in presets() {
+    for (name, spring) in Spring::presets() {
         for target in TARGETS {
             for start in [0.0, -target, target + 1.0] {
                 let rest = rest_for(&spring, target);

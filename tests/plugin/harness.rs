@@ -8,20 +8,6 @@ use bevy_sprung::prelude::*;
 use bevy_sprung::property::SpringProperty;
 use sprung::SpringState;
 
-/// Every preset, with its name.
-pub(crate) fn presets() -> [(&'static str, Spring); 8] {
-    [
-        ("gentle", Spring::gentle()),
-        ("wobbly", Spring::wobbly()),
-        ("stiff", Spring::stiff()),
-        ("slow", Spring::slow()),
-        ("molasses", Spring::molasses()),
-        ("smooth", Spring::smooth()),
-        ("snappy", Spring::snappy()),
-        ("bouncy", Spring::bouncy()),
-    ]
-}
-
 /// A headless app with the spring plugin, advancing `1/fps` seconds per update. Like every
 /// Bevy app, its first update has `dt = 0`.
 pub(crate) fn app(fps: u32) -> App {

@@ -4,9 +4,7 @@ use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 use sprung::SpringState;
 
-use crate::harness::{
-    app, asleep, elapsed, exact, motion, presets, run, spawn_translation, translation,
-};
+use crate::harness::{app, asleep, elapsed, exact, motion, run, spawn_translation, translation};
 
 #[test]
 fn reaches_and_settles_exactly_on_its_target() {
@@ -205,7 +203,7 @@ fn thousands_of_springs_toward_large_targets_at_high_frame_rates_all_arrive() {
                 let magnitude = 10f32.powi(3 + i32::from(i % 4));
                 let angle = f32::from(i) * 0.618_034 * core::f32::consts::TAU;
                 let target = magnitude * Vec3::new(angle.cos(), angle.sin(), 0.3);
-                let presets = presets();
+                let presets = Spring::presets();
                 let spring = presets[usize::from(i) % presets.len()].1;
                 (
                     spawn_translation(&mut app, spring, Vec3::ZERO, target),

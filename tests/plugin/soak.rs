@@ -11,7 +11,7 @@ use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
 use bevy_sprung::ui::{NodeLeft, NodeLeftSpring};
 
-use crate::harness::{app, presets};
+use crate::harness::app;
 
 /// A small, seeded generator (`SplitMix64`).
 struct Random(u64);
@@ -78,7 +78,7 @@ fn sleeping(app: &mut App) -> (usize, usize) {
 fn spawn_entities(app: &mut App) -> Vec<(Entity, f32)> {
     (0..16)
         .map(|i| {
-            let presets = presets();
+            let presets = Spring::presets();
             let spring = presets[i % presets.len()].1;
             let scale = 10f32.powi(i32::try_from(i % 6).unwrap());
             let entity = app

@@ -335,6 +335,19 @@ fn regimes_and_presets() {
     }
     assert_eq!(Spring::<f64>::smooth().regime(), Regime::CriticallyDamped);
     assert_eq!(Spring::<f32>::default(), Spring::<f32>::smooth());
+    // The list of presets: eight distinct springs under distinct names, each found by its name.
+    let presets = Spring::<f64>::presets();
+    for (i, (name, spring)) in presets.iter().enumerate() {
+        assert_eq!(Spring::named_preset(name), Some(*spring), "{name}");
+        for (other_name, other) in &presets[..i] {
+            assert!(
+                name != other_name && spring != other,
+                "{name} and {other_name}"
+            );
+        }
+    }
+    assert_eq!(presets[6], ("snappy", Spring::snappy()));
+    assert_eq!(Spring::<f32>::named_preset("Snappy"), None);
     // Accessors that do not exist without stiffness say so.
     let unsprung = Spring::<f32>::new(1.0, 0.0, 1.0).unwrap();
     assert_eq!(

@@ -22,20 +22,6 @@ fn config(cases: u32) -> ProptestConfig {
     }
 }
 
-/// Every preset, by name.
-fn presets<T: Scalar>() -> [(&'static str, Spring<T>); 8] {
-    [
-        ("gentle", Spring::gentle()),
-        ("wobbly", Spring::wobbly()),
-        ("stiff", Spring::stiff()),
-        ("slow", Spring::slow()),
-        ("molasses", Spring::molasses()),
-        ("smooth", Spring::smooth()),
-        ("snappy", Spring::snappy()),
-        ("bouncy", Spring::bouncy()),
-    ]
-}
-
 /// `±10^e`, `e` uniform in `[low, high)`, times a non-round factor.
 fn magnitude(low: f64, high: f64) -> impl Strategy<Value = f64> {
     (low..high, any::<bool>()).prop_map(|(e, negative)| {
@@ -207,7 +193,7 @@ proptest! {
         preset in 0..8_usize,
         (target, start) in target().prop_flat_map(|t| (Just(t), start(t))),
     ) {
-        let (name, spring) = presets::<f32>()[preset];
+        let (name, spring) = Spring::<f32>::presets()[preset];
         check_arrives(&spring, name, start, target)?;
     }
 
@@ -298,7 +284,7 @@ fn sweep_counts_no_stall() {
     let mut cases = 0_u32;
     let mut old_late = 0_u32;
     let mut worst = 0.0_f64;
-    for (name, spring) in presets::<f32>() {
+    for (name, spring) in Spring::<f32>::presets() {
         for fps in FRAME_RATES {
             for target in targets {
                 for start in [0.0, -target, target + 1.0] {

@@ -49,16 +49,7 @@ fn every_parametrisation_reads_as_its_constructor() {
     for (text, expected) in cases {
         assert_eq!(read::<f64>(text), Ok(expected), "{text}");
     }
-    for (name, preset) in [
-        ("gentle", Spring::<f32>::gentle()),
-        ("wobbly", Spring::wobbly()),
-        ("stiff", Spring::stiff()),
-        ("slow", Spring::slow()),
-        ("molasses", Spring::molasses()),
-        ("smooth", Spring::smooth()),
-        ("snappy", Spring::snappy()),
-        ("bouncy", Spring::bouncy()),
-    ] {
+    for (name, preset) in Spring::<f32>::presets() {
         assert_eq!(read::<f32>(&format!("(preset: {name})")), Ok(preset));
     }
 }
