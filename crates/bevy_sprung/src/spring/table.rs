@@ -191,6 +191,7 @@ impl AnchorLanes {
     /// vector multiply-adds per four slots), or computed exactly where out of reach. The
     /// anchors are only read unless one is out of reach: a frame's preparation streams them
     /// and writes the increments, nothing else.
+    ///
     /// Returns each slot's sum of absolute increments, a lane each (see [`IncrementsBound`]).
     #[inline]
     fn prepare(

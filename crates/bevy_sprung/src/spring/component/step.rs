@@ -197,8 +197,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             // cores than testing the result). A spring settles the frame after its state came
             // within its tolerances.
             let (offset_squared, speed_squared) = (y.norm_squared(), v.norm_squared());
-            let (offset_tolerance, speed_tolerance) = self.rest_squared;
-            let at_rest = (offset_squared <= offset_tolerance) & (speed_squared <= speed_tolerance);
+            let at_rest = self.is_at_rest((offset_squared, speed_squared));
             // Below the table's limit (a NaN square makes the sum NaN, and fail), the step's
             // result is finite and of finite squared length: it needs no test of its own.
             if (offset_squared + speed_squared < table.step_limit()) & !at_rest {
@@ -378,12 +377,12 @@ impl<P: SpringProperty> SpringMotion<P> {
         self.rest_squared = super::rest_squared::<P>(config.rest, target);
         // A state already at rest is not stepped: it settles now. (The usual step tests the
         // state it starts from and declines at rest: this is where it settles.)
-        let still = config.target_rate() == OffsetOf::<P>::ZERO
-            && self.is_at_rest((offset.offset.norm_squared(), velocity.norm_squared()));
+        let mut squared = (offset.offset.norm_squared(), velocity.norm_squared());
+        let still = config.target_rate() == OffsetOf::<P>::ZERO && self.is_at_rest(squared);
         if dt > 0.0 && !still {
             (offset, velocity) = Self::advance(config, cache, target, (offset, velocity), dt);
+            squared = (offset.offset.norm_squared(), velocity.norm_squared());
         }
-        let squared = (offset.offset.norm_squared(), velocity.norm_squared());
         self.finish(config, current, (offset, velocity), squared)
     }
 
@@ -491,11 +490,12 @@ impl<P: SpringProperty> SpringMotion<P> {
     }
 
     /// Whether a state of squared offset and speed `(offset_squared, speed_squared)` is within
-    /// the spring's rest tolerances (a NaN is not).
+    /// the spring's rest tolerances (a NaN is not). Both compared, one branch for the two
+    /// (`&`): the usual step's test too.
     #[inline]
     fn is_at_rest(&self, (offset_squared, speed_squared): (f32, f32)) -> bool {
         let (offset_tolerance, speed_tolerance) = self.rest_squared;
-        offset_squared <= offset_tolerance && speed_squared <= speed_tolerance
+        (offset_squared <= offset_tolerance) & (speed_squared <= speed_tolerance)
     }
 
     /// The end of a step to `(offset, velocity)` with squared lengths `squared`: at rest (toward
