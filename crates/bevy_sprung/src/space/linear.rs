@@ -242,6 +242,19 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
         (Carried { offset, remainder }, velocity)
     }
 
+    /// Only where no component may have crossed zero: a step that may is the general one.
+    #[inline]
+    fn constrain_usual(
+        target: Self::Value,
+        before: Self::Offset,
+        after: Carried<Self::Offset>,
+        velocity: Self::Offset,
+    ) -> Option<(Carried<Self::Offset>, Self::Offset)> {
+        let (after, velocity) = S::constrain_usual(target, before, after, velocity)?;
+        SpringVector::keeps_sign(S::coordinates(target), before, after.offset)
+            .then_some((after, velocity))
+    }
+
     const DEFAULT_REST: sprung::RestThreshold<f32> = S::DEFAULT_REST;
 }
 

@@ -228,6 +228,21 @@ pub trait SpringSpace: Send + Sync + 'static {
         (after, velocity)
     }
 
+    /// [`constrain`](Self::constrain) in the plugin's usual step, which may leave the step to
+    /// the general one (`None`, the state untouched) where constraining it is the uncommon
+    /// case: the per-spring loop then holds no code for it. By default `constrain`'s result;
+    /// [`NeverThroughZero`] leaves a step that may cross zero to the general step.
+    #[inline]
+    #[must_use]
+    fn constrain_usual(
+        target: Self::Value,
+        before: Self::Offset,
+        after: Carried<Self::Offset>,
+        velocity: Self::Offset,
+    ) -> Option<(Carried<Self::Offset>, Self::Offset)> {
+        Some(Self::constrain(target, before, after, velocity))
+    }
+
     /// The tolerances at which a spring in this space counts as at rest, in its units:
     /// [`RestThreshold::DEFAULT`](sprung::RestThreshold::DEFAULT) (a thousandth of a unit, a
     /// hundredth of a unit per second) unless the space says otherwise.

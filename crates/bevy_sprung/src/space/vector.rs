@@ -1,7 +1,7 @@
 //! The vectors offsets move in: Bevy's [`NormedVectorSpace`] over `f32`, plus the component-wise
 //! operations a spring needs to stay finite and in range.
 
-use bevy::math::{NormedVectorSpace, Vec2, Vec3A, Vec4};
+use bevy::math::{NormedVectorSpace, Vec2, Vec3A, Vec4, Vec4Swizzles};
 use bevy::reflect::{FromReflect, Reflectable};
 
 /// A vector an offset and a velocity can be: `f32`, `Vec2`, `Vec3A` or `Vec4`, or a type of your
@@ -33,6 +33,62 @@ pub trait SpringVector:
     /// [`NeverThroughZero`](super::NeverThroughZero).
     #[must_use]
     fn stop_at_zero(coordinates: Self, before: Self, after: [Self; 3]) -> [Self; 3];
+
+    /// Whether, with `c = coordinates`, every component of `c + before` and `c + after` has
+    /// the same sign and none is zero: then [`stop_at_zero`](Self::stop_at_zero) changes
+    /// nothing, and the usual step need not call it. By default `false` (a step of a
+    /// [`NeverThroughZero`](super::NeverThroughZero) spring is then always the general one);
+    /// the built-in vectors test it, all components at once.
+    #[inline]
+    #[must_use]
+    fn keeps_sign(coordinates: Self, before: Self, after: Self) -> bool {
+        let _ = (coordinates, before, after);
+        false
+    }
+
+    /// Whether a state of `offset` and `velocity` steps on: it is not at rest (the squared
+    /// lengths of both within their tolerances `rest_squared`), and each squared length is at
+    /// most `limit` (a NaN is not). By default from [`NormedVectorSpace::norm_squared`] of
+    /// each; a vector may test both at once.
+    #[inline]
+    #[must_use]
+    fn steps_on(offset: Self, velocity: Self, rest_squared: (f32, f32), limit: f32) -> bool {
+        steps_on_by_norms(offset, velocity, rest_squared, limit)
+    }
+
+    /// What one step adds to an `offset` and a `velocity`, with a transition's increments
+    /// `[d00, d01, d10, d11]` (its matrix less the identity): `offset·d00 + velocity·d01` and
+    /// `velocity·d11 + offset·d10`. By default with the vector's own arithmetic; a vector may
+    /// compute both at once.
+    #[inline]
+    #[must_use]
+    fn step_increments(offset: Self, velocity: Self, increments: Vec4) -> (Self, Self) {
+        step_increments_by_parts(offset, velocity, increments)
+    }
+}
+
+/// [`SpringVector::steps_on`] from each part's squared norm.
+#[expect(
+    clippy::needless_bitwise_bool,
+    reason = "non-short-circuit `&` on the per-entity hot path: one branch instead of several"
+)]
+#[inline]
+fn steps_on_by_norms<V: SpringVector>(
+    offset: V,
+    velocity: V,
+    rest_squared: (f32, f32),
+    limit: f32,
+) -> bool {
+    let (offset, speed) = (offset.norm_squared(), velocity.norm_squared());
+    let at_rest = (offset <= rest_squared.0) & (speed <= rest_squared.1);
+    (offset <= limit) & (speed <= limit) & !at_rest
+}
+
+/// [`SpringVector::step_increments`] with the vector's own arithmetic.
+#[inline]
+fn step_increments_by_parts<V: SpringVector>(offset: V, velocity: V, increments: Vec4) -> (V, V) {
+    let [d00, d01, d10, d11] = increments.to_array();
+    (offset * d00 + velocity * d01, velocity * d11 + offset * d10)
 }
 
 /// [`SpringVector::stop_at_zero`] on arrays: `[after, remainder, velocity]`, out of line: it
@@ -84,16 +140,21 @@ impl SpringVector for f32 {
 
     #[inline]
     fn stop_at_zero(coordinates: f32, before: f32, after: [f32; 3]) -> [f32; 3] {
-        // The value keeps its sign (see the vectors' test below).
-        if (coordinates + before) * (coordinates + after[0]) > 0.0 {
+        if Self::keeps_sign(coordinates, before, after[0]) {
             return after;
         }
         stop_at_zero([coordinates], [before], after.map(|x| [x])).map(|[x]| x)
     }
+
+    /// See the vectors' test below.
+    #[inline]
+    fn keeps_sign(coordinates: f32, before: f32, after: f32) -> bool {
+        (coordinates + before) * (coordinates + after) > 0.0
+    }
 }
 
 macro_rules! glam_vector {
-    ($($t:ty),*) => {$(
+    ($t:ty $(, { $($packed:tt)* })?) => {
         impl SpringVector for $t {
             #[inline]
             fn is_finite(self) -> bool {
@@ -112,12 +173,7 @@ macro_rules! glam_vector {
 
             #[inline]
             fn stop_at_zero(coordinates: Self, before: Self, after: [Self; 3]) -> [Self; 3] {
-                // Every component keeps its sign, none is zero: none crossed zero (or reached
-                // it), and the full test would change nothing. The usual case, tested on all
-                // lanes at once so that the step around it keeps its vector arithmetic (a
-                // product that underflows to 0, or a NaN, only sends it to the full test).
-                let (was, is) = (coordinates + before, coordinates + after[0]);
-                if (was * is).cmpgt(<$t>::ZERO).all() {
+                if Self::keeps_sign(coordinates, before, after[0]) {
                     return after;
                 }
                 stop_at_zero(
@@ -127,17 +183,193 @@ macro_rules! glam_vector {
                 )
                 .map(<$t>::from_array)
             }
+
+            /// Every component keeps its sign, none is zero: none crossed zero (or reached
+            /// it), and the full test would change nothing. The usual case, tested on all
+            /// lanes at once so that the step around it keeps its vector arithmetic (a product
+            /// that underflows to 0, or a NaN, only sends it to the full test).
+            #[inline]
+            fn keeps_sign(coordinates: Self, before: Self, after: Self) -> bool {
+                let (was, is) = (coordinates + before, coordinates + after);
+                (was * is).cmpgt(<$t>::ZERO).all()
+            }
+
+            $($($packed)*)?
         }
-    )*};
+    };
 }
 
-glam_vector!(Vec2, Vec3A, Vec4);
+glam_vector!(Vec2, {
+    /// Both at once, in one four-lane vector `[offset, velocity]` (a `Vec2` is two lanes of
+    /// one): its squares summed in pairs, in the order of `Vec2::length_squared`.
+    #[inline]
+    fn steps_on(offset: Vec2, velocity: Vec2, rest_squared: (f32, f32), limit: f32) -> bool {
+        let state = offset.extend(velocity.x).extend(velocity.y);
+        let squares = state * state;
+        steps_on_by_lengths(squares.xzxz() + squares.ywyw(), rest_squared, limit)
+    }
+
+    /// Both at once, in one four-lane vector `[offset, velocity]`: `[d00, d00, d11, d11]`
+    /// times it plus `[d01, d01, d10, d10]` times its halves swapped, the same products and
+    /// sums as two `Vec2`s', in a third of the instructions.
+    #[inline]
+    fn step_increments(offset: Vec2, velocity: Vec2, increments: Vec4) -> (Vec2, Vec2) {
+        let state = offset.extend(velocity.x).extend(velocity.y);
+        let sums = increments.xxww() * state + increments.yyzz() * state.zwxy();
+        (sums.xy(), sums.zw())
+    }
+});
+glam_vector!(Vec3A, {
+    /// Both squared lengths at once, the squares interleaved (`[x, x', y, y']` and
+    /// `[z, z', ·, ·]`) and summed in the order of `Vec3A::length_squared`.
+    #[inline]
+    fn steps_on(offset: Vec3A, velocity: Vec3A, rest_squared: (f32, f32), limit: f32) -> bool {
+        let (offset, velocity) = (offset * offset, velocity * velocity);
+        let xy = Vec4::new(offset.x, velocity.x, offset.y, velocity.y);
+        let z = Vec4::new(offset.z, velocity.z, offset.z, velocity.z);
+        steps_on_by_lengths((xy + xy.zwzw()) + z, rest_squared, limit)
+    }
+});
+glam_vector!(Vec4, {
+    /// Both squared lengths at once, the squares interleaved (`[x, x', y, y']` and
+    /// `[z, z', w, w']`) and summed in the order of `Vec4::length_squared`.
+    #[inline]
+    fn steps_on(offset: Vec4, velocity: Vec4, rest_squared: (f32, f32), limit: f32) -> bool {
+        let (offset, velocity) = (offset * offset, velocity * velocity);
+        let xy = Vec4::new(offset.x, velocity.x, offset.y, velocity.y);
+        let zw = Vec4::new(offset.z, velocity.z, offset.w, velocity.w);
+        let sums = xy + zw;
+        steps_on_by_lengths(sums + sums.zwzw(), rest_squared, limit)
+    }
+});
+
+/// [`SpringVector::steps_on`] from the squared `lengths` of the offset and the velocity in
+/// lanes 0 and 1: both compared at once with `[rest offset, rest speed, limit, limit]`.
+#[inline]
+fn steps_on_by_lengths(lengths: Vec4, rest_squared: (f32, f32), limit: f32) -> bool {
+    let bounds = Vec2::from(rest_squared).extend(limit).extend(limit);
+    // Bits 0 and 1: at rest; 2 and 3: in range. Both in range and not both at rest is 12, 13
+    // or 14 (a NaN length is neither).
+    let within = lengths.xyxy().cmple(bounds).bitmask();
+    within.wrapping_sub(0b1100) < 0b11
+}
 
 #[cfg(test)]
 mod tests {
     use bevy::math::{Vec2, Vec3A, Vec4};
 
-    use super::{SpringVector, stop_at_zero};
+    use super::{SpringVector, step_increments_by_parts, stop_at_zero};
+
+    /// Offsets and velocities at the edges: zeros of both signs, tiny, ordinary, huge (squares
+    /// that overflow), infinite and NaN components.
+    const EDGES: [f32; 12] = [
+        0.0,
+        -0.0,
+        1.0e-30,
+        -1.0e-3,
+        0.5,
+        -3.0,
+        1.0e15,
+        -1.0e19,
+        f32::MAX,
+        f32::NEG_INFINITY,
+        f32::INFINITY,
+        f32::NAN,
+    ];
+
+    /// Every `Vec2` whose components are two of [`EDGES`].
+    fn edge_vectors() -> impl Iterator<Item = Vec2> {
+        EDGES
+            .into_iter()
+            .flat_map(|x| EDGES.into_iter().map(move |y| Vec2::new(x, y)))
+    }
+
+    /// `V::steps_on` decides as the test by each part's norm does, for every pair of
+    /// `vectors` and tolerances and limits from zero to infinite; both outcomes are met often.
+    fn check_steps_on<V: SpringVector + core::fmt::Debug + Copy>(vectors: &[V]) {
+        let rests = [
+            (0.0, 0.0),
+            (1.0e-6, 1.0e-4),
+            (0.25, 9.0),
+            (f32::MAX, f32::MAX),
+        ];
+        let limits = [0.0, 0.25, 9.0, 1.0e30, f32::MAX, f32::INFINITY];
+        let mut stepping = 0;
+        for &offset in vectors {
+            for &velocity in vectors {
+                for rest in rests {
+                    for limit in limits {
+                        let packed = V::steps_on(offset, velocity, rest, limit);
+                        let by_norms = super::steps_on_by_norms(offset, velocity, rest, limit);
+                        assert_eq!(
+                            packed, by_norms,
+                            "{offset:?} {velocity:?} rest {rest:?} limit {limit}"
+                        );
+                        stepping += usize::from(packed);
+                    }
+                }
+            }
+        }
+        let all = vectors.len().pow(2) * rests.len() * limits.len();
+        assert!(
+            stepping > all / 20 && stepping < all - all / 20,
+            "{stepping} of {all}"
+        );
+    }
+
+    /// The vectors' tests of rest and range, the squared lengths of offset and velocity in
+    /// one four-lane vector, decide as the test by each part's norm does: on the boundaries,
+    /// where a square overflows, and where a component is infinite or NaN. (They sum the
+    /// squares in the order the norms do, so they agree bit for bit.)
+    #[test]
+    fn the_packed_rest_and_range_tests_agree_with_the_norms() {
+        let pairs: Vec<Vec2> = edge_vectors().collect();
+        check_steps_on(&pairs);
+        // Each lane of the wider vectors meets every edge value, beside others.
+        let third = |i: usize| EDGES[(i * 5 + 3) % EDGES.len()];
+        let threes: Vec<Vec3A> = (pairs.iter().enumerate())
+            .map(|(i, v)| Vec3A::new(v.x, v.y, third(i)))
+            .collect();
+        check_steps_on(&threes);
+        let rotated: Vec<Vec3A> = threes.iter().map(|v| Vec3A::new(v.z, v.x, v.y)).collect();
+        check_steps_on(&rotated);
+        let fours: Vec<Vec4> = (pairs.iter().enumerate())
+            .map(|(i, v)| Vec4::new(v.x, third(i), v.y, third(i + 1)))
+            .collect();
+        check_steps_on(&fours);
+    }
+
+    /// The `Vec2` step, in one four-lane vector, gives the same bits as two `Vec2`s' products
+    /// and sums (the same operations on each component, in the same order).
+    #[test]
+    fn the_packed_step_gives_the_same_bits() {
+        let increments = [
+            Vec4::new(-0.013, 0.016, -1.6, -0.19),
+            Vec4::new(-1.0, 0.0, 0.0, -1.0),
+            Vec4::new(1.0e-7, -2.5e-3, 3.0e5, 0.5),
+            Vec4::new(f32::MAX, -0.0, f32::MIN_POSITIVE, 1.0e-38),
+        ];
+        let bits = |v: Vec2| v.to_array().map(f32::to_bits);
+        for offset in edge_vectors() {
+            for velocity in edge_vectors() {
+                for increments in increments {
+                    let packed = Vec2::step_increments(offset, velocity, increments);
+                    let by_parts = step_increments_by_parts(offset, velocity, increments);
+                    for (packed, by_parts) in [(packed.0, by_parts.0), (packed.1, by_parts.1)] {
+                        let same = bits(packed) == bits(by_parts)
+                            || (packed.is_nan()
+                                && by_parts.is_nan()
+                                && packed.to_array().map(f32::is_nan)
+                                    == by_parts.to_array().map(f32::is_nan));
+                        assert!(
+                            same,
+                            "{offset} {velocity} {increments}: {packed} {by_parts}"
+                        );
+                    }
+                }
+            }
+        }
+    }
 
     /// The vectors' `stop_at_zero`, which skips the full test where every component keeps its
     /// sign, agrees bit for bit with the full test, component by component: values on both

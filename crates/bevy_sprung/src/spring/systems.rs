@@ -10,7 +10,7 @@ use bevy::utils::Parallel;
 use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringAsleep, SpringMotion, Stepped, UsualStep};
 use super::event::SpringSettled;
-use super::table::{TransitionTable, scope_threads};
+use super::table::{PreparedIncrements, TransitionTable, scope_threads};
 use crate::choreography::{SettleTracker, SpringGroup};
 use crate::clock::{FrameSteps, SpringTime};
 use crate::property::SpringProperty;
@@ -156,6 +156,7 @@ fn step_entity<P: SpringProperty>(
         (config.bypass_change_detection(), motion.into_inner()),
         component.bypass_change_detection(),
         untouched,
+        table.prepared(),
         (&steps, table, caches, commands),
     );
     if moved {
@@ -178,6 +179,7 @@ fn step_row<P: SpringProperty>(
     (config, motion): (&mut PropertySpring<P>, &mut SpringMotion<P>),
     component: &mut P::Component,
     untouched: bool,
+    prepared: PreparedIncrements,
     (steps, table, caches, commands): (
         &FrameSteps,
         &TransitionTable,
@@ -186,7 +188,7 @@ fn step_row<P: SpringProperty>(
     ),
 ) -> bool {
     let current = P::get(component);
-    match motion.step_usual(config, current, steps, false, untouched, table) {
+    match motion.step_usual(current, untouched, prepared) {
         UsualStep::Moved(value) => {
             P::set(component, value);
             true
@@ -196,7 +198,7 @@ fn step_row<P: SpringProperty>(
             entity(),
             (config, motion),
             component,
-            (*steps, table, caches),
+            (*steps, untouched, table, caches),
             commands,
         ),
     }
@@ -294,6 +296,7 @@ fn step_rows<P: SpringProperty>(
     (steps, table, caches, commands): StepContext,
 ) {
     motion_changed.fill(this_run);
+    let prepared = table.prepared();
     let rows = configs
         .iter_mut()
         .zip(motions.iter_mut())
@@ -309,6 +312,7 @@ fn step_rows<P: SpringProperty>(
             (config, motion),
             component,
             untouched,
+            prepared,
             (&steps, table, caches, commands),
         ) {
             *component_changed = this_run;
@@ -347,7 +351,12 @@ fn step_entity_unusual<P: SpringProperty>(
     entity: Entity,
     (config, motion): (&mut PropertySpring<P>, &mut SpringMotion<P>),
     component: &mut P::Component,
-    (steps, table, caches): (FrameSteps, &TransitionTable, &Parallel<TransitionCache>),
+    (steps, untouched, table, caches): (
+        FrameSteps,
+        bool,
+        &TransitionTable,
+        &Parallel<TransitionCache>,
+    ),
     commands: &ParallelCommands,
 ) -> bool {
     // Read again rather than passed: as an argument, the value would leave the vector
@@ -357,7 +366,7 @@ fn step_entity_unusual<P: SpringProperty>(
         config,
         current,
         steps,
-        false,
+        (false, untouched),
         (table, &mut caches.borrow_local_mut()),
     );
     if frame.outcome == Stepped::Settled {

@@ -282,9 +282,36 @@ pub(crate) struct TransitionTable {
     /// Whether any spring asked for a slot since the last [`finish`](Self::finish): a frame
     /// without requests does not visit the per-thread buffers (about 950 instructions).
     requested: AtomicBool,
-    /// The squared state length below which one step by any slot's increments stays far
-    /// inside `f32` (see [`step_limit`](Self::step_limit)).
+    /// The squared length of offset and velocity up to which one step by any slot's increments
+    /// stays far inside `f32` (see [`step_limit`](Self::step_limit)).
     step_limit: f32,
+}
+
+/// This frame's increments of a [`TransitionTable`]'s slots, by ticket, and its
+/// [`step_limit`](TransitionTable::step_limit): all the usual step reads of it.
+#[derive(Clone, Copy)]
+pub(crate) struct PreparedIncrements<'a> {
+    increments: &'a [Vec4],
+    first: u64,
+    step_limit: f32,
+}
+
+impl PreparedIncrements<'_> {
+    /// The increments of the slot with `ticket`, if the table has it: one subtraction and one
+    /// bounds check find it.
+    #[inline]
+    pub(crate) fn increments(self, ticket: u64) -> Option<Vec4> {
+        // The padding past the last slot holds no ticket's increments, but reading it is
+        // harmless: a ticket past the last slot was never handed out.
+        let index = usize::try_from(ticket.wrapping_sub(self.first)).ok()?;
+        self.increments.get(index).copied()
+    }
+
+    /// See [`TransitionTable::step_limit`].
+    #[inline]
+    pub(crate) fn step_limit(self) -> f32 {
+        self.step_limit
+    }
 }
 
 /// `2¹²⁶`: the squared length a step's result stays below, a factor of 4 under `f32::MAX`
@@ -416,16 +443,18 @@ impl TransitionTable {
                 &self.slots,
             )
         };
-        // A state of squared length below the limit has both parts shorter than its root; a
-        // step adds at most `bound` times that to each: the result is shorter than
-        // `(1 + bound)·√limit`, whose square is the result bound (0 for an infinite bound).
+        // A state whose parts' squared lengths are within the limit has both parts no longer
+        // than its root; a step adds at most `bound` times that to each: the result is no
+        // longer than `(1 + bound)·√limit`, whose square is the result bound (0 for an
+        // infinite bound).
         self.step_limit = STEP_RESULT_BOUND / ((1.0 + bound) * (1.0 + bound));
     }
 
-    /// The squared length of state `|y|² + |v|²` below which one step by any slot's prepared
-    /// increments gives a result of squared length below `2¹²⁶`: finite, and far from
-    /// overflowing, so the step needs no test of its result. 0 (nothing is below it) before
-    /// the first preparation and when an increment is not finite.
+    /// The squared length up to which, for the offset `|y|²` and the velocity `|v|²` both,
+    /// one step by any slot's prepared increments gives a result of squared length at most
+    /// `2¹²⁶`: finite, and far from overflowing, so the step needs no test of its result. 0
+    /// (only a state at zero is within it) before the first preparation and when an increment
+    /// is not finite.
     #[inline]
     #[must_use]
     pub(crate) fn step_limit(&self) -> f32 {
@@ -436,10 +465,20 @@ impl TransitionTable {
     /// it: one subtraction and one bounds check find it.
     #[inline]
     pub(crate) fn increments(&self, ticket: u64) -> Option<Vec4> {
-        // The padding past the last slot holds no ticket's increments, but reading it is
-        // harmless: a ticket past the last slot was never handed out.
-        let index = usize::try_from(ticket.wrapping_sub(self.first)).ok()?;
-        self.increments.get(index).copied()
+        self.prepared().increments(ticket)
+    }
+
+    /// What the usual step reads of the table, copied out of it: a loop over springs keeps it
+    /// in registers (the table itself, with its request buffers, may change behind a shared
+    /// reference, so its fields would be loaded again for every spring).
+    #[inline]
+    #[must_use]
+    pub(crate) fn prepared(&self) -> PreparedIncrements<'_> {
+        PreparedIncrements {
+            increments: &self.increments,
+            first: self.first,
+            step_limit: self.step_limit,
+        }
     }
 
     /// The ticket of the slot of `spring` on clock `clock`, if the table has one.
@@ -775,7 +814,7 @@ mod tests {
         }
     }
 
-    /// A step from a state below the table's limit, by any slot's increments, gives a result
+    /// A step from a state within the table's limit, by any slot's increments, gives a result
     /// of squared length below `2¹²⁶`, so the usual step needs no test of its result: for
     /// springs from slow to absurdly stiff (ω = 10⁶) and nearly undamped to heavily
     /// over-damped, at steps from 360 fps to a quarter-second hitch, and states on the limit
@@ -823,8 +862,11 @@ mod tests {
                 table.prepare(FrameSteps::all(dt));
                 let limit = table.step_limit();
                 assert!(limit > 0.0, "dt {dt}: the limit is {limit}");
-                // Both parts at the limit: the largest state below it.
-                let length = (limit / 2.0).sqrt();
+                // Both parts at the limit: the largest state within it.
+                let mut length = limit.sqrt();
+                while length * length > limit {
+                    length = length.next_down();
+                }
                 for (spring, clock) in springs {
                     let slot = table.lookup(spring, *clock).unwrap();
                     let [d00, d01, d10, d11] = table.increments(slot).unwrap().to_array();

@@ -18,7 +18,7 @@ use crate::property::{OffsetOf, SpringProperty, ValueOf};
 use crate::reduced_motion::ReducedMotion;
 use crate::space::{Carried, SpringSpace, SpringVector};
 use crate::spring::cache::TransitionCache;
-use crate::spring::table::TransitionTable;
+use crate::spring::table::{PreparedIncrements, TransitionTable};
 
 /// What one frame did to a spring, and the value to write, if it changed.
 #[derive(Clone, Copy, Debug)]
@@ -65,8 +65,8 @@ fn increment_step<V: SpringVector>(
     v: V,
 ) -> (Carried<V>, V) {
     let [[d00, d01], [d10, d11]] = transition.increment_matrix();
-    let offset = y.offset;
-    (y.plus(offset * d00 + v * d01), v + (v * d11 + offset * d10))
+    let (moved, accelerated) = V::step_increments(y.offset, v, Vec4::new(d00, d01, d10, d11));
+    (y.plus(moved), v + accelerated)
 }
 
 /// The exact step of offset `y` (from the target's end-of-step position) and velocity `v`
@@ -119,12 +119,12 @@ impl<P: SpringProperty> SpringMotion<P> {
     /// not read.
     ///
     /// The common case — an untouched spring — finds its transition in its slot of the
-    /// property's [`TransitionTable`] and is straight-line, a handful of vector instructions. A
-    /// spring that was touched first checks that its step is still the usual one (the target of
-    /// its last step, no moving target, no time pending) and finds its slot. Every other case,
-    /// and a state at rest or too large for the table's [`step_limit`](TransitionTable::step_limit)
-    /// (which covers NaN), goes out of line from the same, untouched state: a state at rest
-    /// settles there, without a step.
+    /// property's [`TransitionTable`] and is straight-line, a handful of vector instructions.
+    /// Every other case goes out of line from the same, untouched state: a spring that was
+    /// touched first checks that its step is still the usual one (the target of its last step,
+    /// no moving target, no time pending) and finds its slot; a state at rest or too large for
+    /// the table's [`step_limit`](TransitionTable::step_limit) (which covers NaN) steps the
+    /// general way (a state at rest settles there, without a step).
     #[inline]
     pub(crate) fn step(
         &mut self,
@@ -135,7 +135,8 @@ impl<P: SpringProperty> SpringMotion<P> {
         untouched: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        match self.step_usual(config, current, &steps, hidden, untouched, table) {
+        let found = untouched & !hidden;
+        match self.step_usual(current, found, table.prepared()) {
             UsualStep::Moved(value) => Frame {
                 outcome: Stepped::Moving,
                 write: Some(value),
@@ -145,14 +146,16 @@ impl<P: SpringProperty> SpringMotion<P> {
                 write: None,
             },
             UsualStep::Declined => {
-                self.step_unusual(config, current, steps, hidden, (table, cache))
+                self.step_unusual(config, current, steps, (hidden, found), (table, cache))
             }
         }
     }
 
-    /// [`step`](Self::step)'s common case, which needs no transition of its own: the spring
-    /// keeps moving (and this is the value to write, if it changed), or the step is declined
-    /// (the state untouched) for [`step_unusual`](Self::step_unusual) to do.
+    /// [`step`](Self::step)'s common case, which needs neither the configuration nor a
+    /// transition of its own: for a spring that is `untouched` (and visible), its ticket finds
+    /// its increments in the table `prepared` for this frame, and the spring keeps moving (and
+    /// this is the value to write, if it changed); otherwise the step is declined (the state
+    /// untouched) for [`step_unusual`](Self::step_unusual) to do.
     #[expect(
         clippy::inline_always,
         reason = "the per-entity loop's hot path: measured 60 instructions per spring cheaper \
@@ -161,73 +164,101 @@ impl<P: SpringProperty> SpringMotion<P> {
     #[inline(always)]
     pub(crate) fn step_usual(
         &mut self,
-        config: &mut PropertySpring<P>,
         current: ValueOf<P>,
-        steps: &FrameSteps,
-        hidden: bool,
         untouched: bool,
-        table: &TransitionTable,
+        prepared: PreparedIncrements,
     ) -> UsualStep<ValueOf<P>> {
-        // Untouched, the spring's ticket (if the table still has it) finds its transition;
-        // otherwise the step's conditions and the slot are checked.
-        let untouched_increments = if untouched & !hidden {
-            table.increments(self.ticket)
+        let found = if untouched {
+            prepared.increments(self.ticket)
         } else {
             None
         };
-        let increments = match untouched_increments {
-            Some(increments) => Some(increments),
-            None => self.touched_increments(config, steps, hidden, table),
-        };
-        if let Some(increments) = increments {
-            // One aligned load, each entry broadcast from it.
-            let [d00, d01, d10, d11] = increments.to_array();
-            // The spring's target (a usual step is toward the target of the last one): read from
-            // the motion, the configuration is not read at all while nothing changes it.
-            let target = self.active_target;
-            let carried = self.offset;
-            let before = if P::Space::is_written(current, target, carried) {
-                carried
-            } else {
-                P::Space::carried_offset(current, target)
-            };
-            let (y, v) = (before.offset, self.velocity);
-            // Rest, and range, are tested on the state the step starts from: the test then waits
-            // on nothing the step computes, and the two run side by side (8% faster on two
-            // cores than testing the result). A spring settles the frame after its state came
-            // within its tolerances.
-            let (offset_squared, speed_squared) = (y.norm_squared(), v.norm_squared());
-            let at_rest = self.is_at_rest((offset_squared, speed_squared));
-            // Below the table's limit (a NaN square makes the sum NaN, and fail), the step's
-            // result is finite and of finite squared length: it needs no test of its own.
-            if (offset_squared + speed_squared < table.step_limit()) & !at_rest {
-                let (after, velocity) = (before.plus(y * d00 + v * d01), v + (v * d11 + y * d10));
-                let (after, velocity) = P::Space::constrain(target, y, after, velocity);
-                self.offset = after;
-                self.velocity = velocity;
-                let value = P::Space::at_carried(target, after);
-                return if P::Space::same(value, current) {
-                    UsualStep::Still
-                } else {
-                    UsualStep::Moved(value)
-                };
-            }
+        match found {
+            Some(increments) => self.step_by(increments, current, prepared.step_limit()),
+            None => UsualStep::Declined,
         }
-        UsualStep::Declined
     }
 
-    /// [`step`](Self::step) when [`step_usual`](Self::step_usual) declined: out of line, with
-    /// a transition computed (once per distinct spring and time step, in `cache`) when the
-    /// spring's slot does not serve.
+    /// The usual step by `increments` from the property's `current` value, or declined (the
+    /// state untouched) where the value was written by something else, the state is at rest
+    /// or above the table's step `limit`.
+    #[expect(
+        clippy::inline_always,
+        reason = "the per-entity loop's hot path (see `step_usual`)"
+    )]
+    #[inline(always)]
+    fn step_by(
+        &mut self,
+        increments: Vec4,
+        current: ValueOf<P>,
+        limit: f32,
+    ) -> UsualStep<ValueOf<P>> {
+        // The spring's target (a usual step is toward the target of the last one): read from
+        // the motion, the configuration is not read at all while nothing changes it.
+        let target = self.active_target;
+        let before = self.offset;
+        let (y, v) = (before.offset, self.velocity);
+        // A value written by something else since (rare) is stepped the general way: here
+        // the offset is always the carried one, and its sum with the target is shared with
+        // the step's own.
+        let written = P::Space::is_written(current, target, before);
+        // Rest, and range, are tested on the state the step starts from: the test then waits
+        // on nothing the step computes, and the two run side by side (8% faster on two cores
+        // than testing the result). A spring settles the frame after its state came within
+        // its tolerances. Within the table's limit (a NaN is not), the step's result is finite
+        // and of finite squared length: it needs no test of its own.
+        if !(written & SpringVector::steps_on(y, v, self.rest_squared, limit)) {
+            return UsualStep::Declined;
+        }
+        let (moved, accelerated) = SpringVector::step_increments(y, v, increments);
+        let (after, velocity) = (before.plus(moved), v + accelerated);
+        let Some((after, velocity)) = P::Space::constrain_usual(target, y, after, velocity) else {
+            return UsualStep::Declined;
+        };
+        self.offset = after;
+        self.velocity = velocity;
+        let value = P::Space::at_carried(target, after);
+        if P::Space::same(value, current) {
+            UsualStep::Still
+        } else {
+            UsualStep::Moved(value)
+        }
+    }
+
+    /// [`step`](Self::step) when [`step_usual`](Self::step_usual) declined: out of line, the
+    /// usual step from the spring's slot if it was touched and its step is still the usual one,
+    /// otherwise the general step, with a transition computed (once per distinct spring and
+    /// time step, in `cache`).
     #[inline(never)]
     pub(crate) fn step_unusual(
         &mut self,
         config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         steps: FrameSteps,
-        hidden: bool,
+        (hidden, looked_up): (bool, bool),
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
+        // A spring whose increments the usual step found (`looked_up`: it looked) was declined
+        // for its state, or for its value: the general step. One that was touched (or whose
+        // table was cleared) may still step the usual way, from its slot.
+        let found = looked_up && table.increments(self.ticket).is_some();
+        if !found && let Some(increments) = self.touched_increments(config, &steps, hidden, table) {
+            match self.step_by(increments, current, table.step_limit()) {
+                UsualStep::Moved(value) => {
+                    return Frame {
+                        outcome: Stepped::Moving,
+                        write: Some(value),
+                    };
+                }
+                UsualStep::Still => {
+                    return Frame {
+                        outcome: Stepped::Moving,
+                        write: None,
+                    };
+                }
+                UsualStep::Declined => {}
+            }
+        }
         let dt = steps.dt(config.clock);
         let frame = self.step_general(config, current, dt, hidden, (table, cache));
         self.ticket = TransitionTable::NO_TICKET;
@@ -275,10 +306,8 @@ impl<P: SpringProperty> SpringMotion<P> {
     }
 
     /// The increments of the spring's slot when its ticket did not find them (it was touched,
-    /// or its table was cleared), if this frame's step is the usual one: out of line, so that
-    /// the per-entity loop stays small.
-    #[cold]
-    #[inline(never)]
+    /// or its table was cleared), if this frame's step is the usual one.
+    #[inline]
     fn touched_increments(
         &mut self,
         config: &PropertySpring<P>,
