@@ -50,6 +50,21 @@ pub trait SpringVector:
     /// lengths of both within their tolerances `rest_squared`), and each squared length is at
     /// most `limit` (a NaN is not). By default from [`NormedVectorSpace::norm_squared`] of
     /// each; a vector may test both at once.
+    ///
+    /// # Example
+    /// ```
+    /// use bevy::math::Vec2;
+    /// use bevy_sprung::space::SpringVector;
+    ///
+    /// let rest = (0.01_f32.powi(2), 0.1_f32.powi(2));
+    /// // Moving, and in range.
+    /// assert!(Vec2::steps_on(Vec2::new(3.0, 4.0), Vec2::ZERO, rest, 1.0e30));
+    /// // At rest: both within their tolerances.
+    /// assert!(!Vec2::steps_on(Vec2::splat(0.001), Vec2::splat(0.01), rest, 1.0e30));
+    /// // Out of range (25 > 24), or NaN.
+    /// assert!(!Vec2::steps_on(Vec2::new(3.0, 4.0), Vec2::ZERO, rest, 24.0));
+    /// assert!(!Vec2::steps_on(Vec2::new(f32::NAN, 0.0), Vec2::ZERO, rest, 1.0e30));
+    /// ```
     #[inline]
     #[must_use]
     fn steps_on(offset: Self, velocity: Self, rest_squared: (f32, f32), limit: f32) -> bool {
@@ -60,6 +75,17 @@ pub trait SpringVector:
     /// `[d00, d01, d10, d11]` (its matrix less the identity): `offset·d00 + velocity·d01` and
     /// `velocity·d11 + offset·d10`. By default with the vector's own arithmetic; a vector may
     /// compute both at once.
+    ///
+    /// # Example
+    /// ```
+    /// use bevy::math::{Vec2, Vec4};
+    /// use bevy_sprung::space::SpringVector;
+    ///
+    /// let increments = Vec4::new(-0.5, 0.25, -2.0, -0.125);
+    /// let (moved, accelerated) = Vec2::step_increments(Vec2::X, Vec2::Y, increments);
+    /// assert_eq!(moved, Vec2::new(-0.5, 0.25));
+    /// assert_eq!(accelerated, Vec2::new(-2.0, -0.125));
+    /// ```
     #[inline]
     #[must_use]
     fn step_increments(offset: Self, velocity: Self, increments: Vec4) -> (Self, Self) {

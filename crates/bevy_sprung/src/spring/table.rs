@@ -200,18 +200,27 @@ impl AnchorLanes {
         (slots, block): (&&[Slot], usize),
         dt: Vec4,
     ) -> Vec4 {
-        let (rows, within) = self.increments(dt);
-        if within.all() {
-            let by_lane = by_lane(rows);
-            for (lane, increments) in increments.iter_mut().enumerate() {
-                *increments = by_lane.col(lane);
-            }
-            let [d00, d01, d10, d11] = rows.map(Vec4::abs);
-            (d00 + d01) + (d10 + d11)
-        } else {
+        self.prepare_within(increments, dt).unwrap_or_else(|| {
             self.prepare_lanes(increments, slots, block, dt);
             Vec4::from_array(increments.map(|lane| lane.abs().element_sum()))
+        })
+    }
+
+    /// [`prepare`](Self::prepare) where every lane is within reach (the sums returned), and
+    /// nothing otherwise (`None`, the increments untouched): no call, so that a loop of these
+    /// keeps what it carries in registers.
+    #[inline]
+    fn prepare_within(&self, increments: &mut [Vec4; 4], dt: Vec4) -> Option<Vec4> {
+        let (rows, within) = self.increments(dt);
+        if !within.all() {
+            return None;
         }
+        let by_lane = by_lane(rows);
+        for (lane, increments) in increments.iter_mut().enumerate() {
+            *increments = by_lane.col(lane);
+        }
+        let [d00, d01, d10, d11] = rows.map(Vec4::abs);
+        Some((d00 + d01) + (d10 + d11))
     }
 
     /// [`prepare`](Self::prepare) lane by lane: the lanes within reach take their extension
@@ -413,10 +422,21 @@ impl TransitionTable {
                             increments: &mut [Vec4],
                             slots: &[Slot]| {
             let (increments, _) = increments.as_chunks_mut::<4>();
-            let blocks = lanes.iter_mut().zip(clocks).zip(increments);
+            let mut blocks = lanes.iter_mut().zip(clocks).zip(increments).enumerate();
             let mut bound = IncrementsBound::NONE;
+            // The blocks up to the first with a lane out of reach (nearly always all of them):
+            // nothing called, the bound kept in registers (where a call might follow, it was
+            // stored and loaded again every block: 1.5 instructions a slot).
+            for (block, ((lanes, clocks), increments)) in blocks.by_ref() {
+                let dt = steps_of(clocks);
+                let Some(sums) = lanes.prepare_within(increments, dt) else {
+                    bound.include(lanes.prepare(increments, (&slots, block), dt));
+                    break;
+                };
+                bound.include(sums);
+            }
             // The slots by block index: only a lane that needs an exact transition reads one.
-            for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
+            for (block, ((lanes, clocks), increments)) in blocks {
                 bound.include(lanes.prepare(increments, (&slots, block), steps_of(clocks)));
             }
             bound.value()
@@ -722,6 +742,56 @@ mod tests {
             }
             before = now;
         }
+    }
+
+    /// Blocks of lanes within reach before and after one that is not (soft springs, whose
+    /// anchors reach far, around stiff ones, whose anchors do not): every slot is prepared,
+    /// extended or computed exactly, and the step limit bounds every slot's increments, those
+    /// of the blocks after the first out of reach included.
+    #[test]
+    fn blocks_after_one_out_of_reach_are_prepared_and_bounded() {
+        let soft = |i: u16| Spring::from_natural_frequency(2.0 + f32::from(i), 0.5).unwrap();
+        let stiff = |i: u16| Spring::from_natural_frequency(3000.0 + f32::from(i), 0.2).unwrap();
+        let stiffest =
+            |i: u16| Spring::from_natural_frequency(9000.0 + f32::from(i), 0.01).unwrap();
+        // The first block out of reach has the largest bound, a block within reach and one
+        // out of reach follow it.
+        let springs: Vec<(Spring<f32>, u8)> = (0..4)
+            .map(soft)
+            .chain((0..4).map(stiffest))
+            .chain((4..8).map(soft))
+            .chain((0..4).map(stiff))
+            .map(|spring| (spring, 0))
+            .collect();
+        let mut table = TransitionTable::default();
+        for (spring, clock) in &springs {
+            table.request(spring, *clock);
+        }
+        table.finish(springs.len());
+        let (dt, nearby) = (1.0 / 60.0, 1.0 / 60.0 + 2.0e-4);
+        table.prepare(FrameSteps::all(dt));
+        assert!(worst_prepared_error(&table, &springs, FrameSteps::all(dt)) < 8.0);
+        // The soft springs' anchors reach the nearby step; the stiff ones' do not.
+        for (spring, expected) in [(soft(0), true), (stiff(0), false)] {
+            let anchor = Anchor::new(&spring, dt, &spring.transition(dt));
+            assert_eq!(extend(&anchor, nearby, 0).is_some(), expected, "{spring:?}");
+        }
+        table.prepare(FrameSteps::all(nearby));
+        let worst = worst_prepared_error(&table, &springs, FrameSteps::all(nearby));
+        assert!(worst < 8.0, "{worst} u");
+        let mut bound = IncrementsBound::NONE;
+        for (spring, clock) in &springs {
+            let slot = table.lookup(spring, *clock).unwrap();
+            let increments = table.increments(slot).unwrap();
+            bound.include(Vec4::splat(increments.abs().element_sum()));
+        }
+        let bound = bound.value();
+        let expected = STEP_RESULT_BOUND / ((1.0 + bound) * (1.0 + bound));
+        assert_eq!(
+            table.step_limit().to_bits(),
+            expected.to_bits(),
+            "bound {bound}"
+        );
     }
 
     /// A frame with the same steps as the last skips the table, yet slots added since (in a
