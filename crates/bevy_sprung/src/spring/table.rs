@@ -200,27 +200,18 @@ impl AnchorLanes {
         (slots, block): (&&[Slot], usize),
         dt: Vec4,
     ) -> Vec4 {
-        self.prepare_within(increments, dt).unwrap_or_else(|| {
+        let (rows, within) = self.increments(dt);
+        if within.all() {
+            let by_lane = by_lane(rows);
+            for (lane, increments) in increments.iter_mut().enumerate() {
+                *increments = by_lane.col(lane);
+            }
+            let [d00, d01, d10, d11] = rows.map(Vec4::abs);
+            (d00 + d01) + (d10 + d11)
+        } else {
             self.prepare_lanes(increments, slots, block, dt);
             Vec4::from_array(increments.map(|lane| lane.abs().element_sum()))
-        })
-    }
-
-    /// [`prepare`](Self::prepare) where every lane is within reach (the sums returned), and
-    /// nothing otherwise (`None`, the increments untouched): no call, so that a loop of these
-    /// keeps what it carries in registers.
-    #[inline]
-    fn prepare_within(&self, increments: &mut [Vec4; 4], dt: Vec4) -> Option<Vec4> {
-        let (rows, within) = self.increments(dt);
-        if !within.all() {
-            return None;
         }
-        let by_lane = by_lane(rows);
-        for (lane, increments) in increments.iter_mut().enumerate() {
-            *increments = by_lane.col(lane);
-        }
-        let [d00, d01, d10, d11] = rows.map(Vec4::abs);
-        Some((d00 + d01) + (d10 + d11))
     }
 
     /// [`prepare`](Self::prepare) lane by lane: the lanes within reach take their extension
@@ -422,21 +413,10 @@ impl TransitionTable {
                             increments: &mut [Vec4],
                             slots: &[Slot]| {
             let (increments, _) = increments.as_chunks_mut::<4>();
-            let mut blocks = lanes.iter_mut().zip(clocks).zip(increments).enumerate();
+            let blocks = lanes.iter_mut().zip(clocks).zip(increments);
             let mut bound = IncrementsBound::NONE;
-            // The blocks up to the first with a lane out of reach (nearly always all of them):
-            // nothing called, the bound kept in registers (where a call might follow, it was
-            // stored and loaded again every block: 1.5 instructions a slot).
-            for (block, ((lanes, clocks), increments)) in blocks.by_ref() {
-                let dt = steps_of(clocks);
-                let Some(sums) = lanes.prepare_within(increments, dt) else {
-                    bound.include(lanes.prepare(increments, (&slots, block), dt));
-                    break;
-                };
-                bound.include(sums);
-            }
             // The slots by block index: only a lane that needs an exact transition reads one.
-            for (block, ((lanes, clocks), increments)) in blocks {
+            for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
                 bound.include(lanes.prepare(increments, (&slots, block), steps_of(clocks)));
             }
             bound.value()
@@ -744,10 +724,10 @@ mod tests {
         }
     }
 
-    /// Blocks of lanes within reach before and after one that is not (soft springs, whose
+    /// Blocks of lanes within reach before and after ones that are not (soft springs, whose
     /// anchors reach far, around stiff ones, whose anchors do not): every slot is prepared,
     /// extended or computed exactly, and the step limit bounds every slot's increments, those
-    /// of the blocks after the first out of reach included.
+    /// of the blocks out of reach and after them included.
     #[test]
     fn blocks_after_one_out_of_reach_are_prepared_and_bounded() {
         let soft = |i: u16| Spring::from_natural_frequency(2.0 + f32::from(i), 0.5).unwrap();
