@@ -23,6 +23,7 @@ pub use length::{Length, Length2};
 pub use linear::{AffineSpace, Linear, LinearValue, NeverThroughZero};
 pub use rotation::{ShortestAngle, ShortestArc, rotation_vector};
 pub use vector::SpringVector;
+pub(crate) use vector::is_within_rest;
 
 /// An offset carried between steps as an unevaluated sum `offset + remainder`, where the
 /// remainder holds what rounding dropped from `offset` (compensated summation).

@@ -318,6 +318,15 @@ impl PreparedIncrements<'_> {
 /// for the rounding of the step's few operations.
 const STEP_RESULT_BOUND: f32 = 85_070_591_730_234_615_865_843_651_857_942_052_864.0;
 
+/// The step limit (see [`TransitionTable::step_limit`]) for increments whose row sums of
+/// absolute entries are at most `bound`. A state whose parts' squared lengths are within the
+/// limit has both parts no longer than its root; a step adds at most `bound` times that to
+/// each: the result is no longer than `(1 + bound)·√limit`, whose square is the result bound
+/// (0 for an infinite bound).
+fn step_limit_for(bound: f32) -> f32 {
+    STEP_RESULT_BOUND / ((1.0 + bound) * (1.0 + bound))
+}
+
 /// The largest sum of a slot's absolute increments `|d₀₀| + |d₀₁| + |d₁₀| + |d₁₁|` among the
 /// slots it has seen (four lanes at a time): a bound on every row sum `|dᵢ₀| + |dᵢ₁|`.
 #[derive(Clone, Copy, Debug)]
@@ -443,11 +452,7 @@ impl TransitionTable {
                 &self.slots,
             )
         };
-        // A state whose parts' squared lengths are within the limit has both parts no longer
-        // than its root; a step adds at most `bound` times that to each: the result is no
-        // longer than `(1 + bound)·√limit`, whose square is the result bound (0 for an
-        // infinite bound).
-        self.step_limit = STEP_RESULT_BOUND / ((1.0 + bound) * (1.0 + bound));
+        self.step_limit = step_limit_for(bound);
     }
 
     /// The squared length up to which, for the offset `|y|²` and the velocity `|v|²` both,
@@ -574,7 +579,9 @@ mod tests {
     use bevy::math::Vec4;
     use sprung::Spring;
 
-    use super::{Anchor, AnchorLanes, IncrementsBound, STEP_RESULT_BOUND, TransitionTable};
+    use super::{
+        Anchor, AnchorLanes, IncrementsBound, STEP_RESULT_BOUND, TransitionTable, step_limit_for,
+    };
     use crate::clock::FrameSteps;
 
     /// `anchor`'s increments over `dt`, if within reach, from lane `lane` of lanes holding it
@@ -766,7 +773,7 @@ mod tests {
             bound.include(Vec4::splat(increments.abs().element_sum()));
         }
         let bound = bound.value();
-        let expected = STEP_RESULT_BOUND / ((1.0 + bound) * (1.0 + bound));
+        let expected = step_limit_for(bound);
         assert_eq!(
             table.step_limit().to_bits(),
             expected.to_bits(),

@@ -40,6 +40,23 @@ pub(crate) enum UsualStep<V> {
     Declined,
 }
 
+impl<V> UsualStep<V> {
+    /// The frame of a spring that took the usual step (it keeps moving), or `None` where the
+    /// step was declined.
+    #[inline]
+    fn frame(self) -> Option<Frame<V>> {
+        let write = match self {
+            Self::Moved(value) => Some(value),
+            Self::Still => None,
+            Self::Declined => return None,
+        };
+        Some(Frame {
+            outcome: Stepped::Moving,
+            write,
+        })
+    }
+}
+
 /// What one frame did to a spring.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Stepped {
@@ -135,19 +152,13 @@ impl<P: SpringProperty> SpringMotion<P> {
         untouched: bool,
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
-        let found = untouched & !hidden;
-        match self.step_usual(current, found, table.prepared()) {
-            UsualStep::Moved(value) => Frame {
-                outcome: Stepped::Moving,
-                write: Some(value),
-            },
-            UsualStep::Still => Frame {
-                outcome: Stepped::Moving,
-                write: None,
-            },
-            UsualStep::Declined => {
-                self.step_unusual(config, current, steps, (hidden, found), (table, cache))
-            }
+        let looked_up = untouched & !hidden;
+        match self
+            .step_usual(current, looked_up, table.prepared())
+            .frame()
+        {
+            Some(frame) => frame,
+            None => self.step_unusual(config, current, steps, (hidden, looked_up), (table, cache)),
         }
     }
 
@@ -242,22 +253,13 @@ impl<P: SpringProperty> SpringMotion<P> {
         // for its state, or for its value: the general step. One that was touched (or whose
         // table was cleared) may still step the usual way, from its slot.
         let found = looked_up && table.increments(self.ticket).is_some();
-        if !found && let Some(increments) = self.touched_increments(config, &steps, hidden, table) {
-            match self.step_by(increments, current, table.step_limit()) {
-                UsualStep::Moved(value) => {
-                    return Frame {
-                        outcome: Stepped::Moving,
-                        write: Some(value),
-                    };
-                }
-                UsualStep::Still => {
-                    return Frame {
-                        outcome: Stepped::Moving,
-                        write: None,
-                    };
-                }
-                UsualStep::Declined => {}
-            }
+        if !found
+            && let Some(increments) = self.touched_increments(config, &steps, hidden, table)
+            && let Some(frame) = self
+                .step_by(increments, current, table.step_limit())
+                .frame()
+        {
+            return frame;
         }
         let dt = steps.dt(config.clock);
         let frame = self.step_general(config, current, dt, hidden, (table, cache));
@@ -518,13 +520,11 @@ impl<P: SpringProperty> SpringMotion<P> {
         )
     }
 
-    /// Whether a state of squared offset and speed `(offset_squared, speed_squared)` is within
-    /// the spring's rest tolerances (a NaN is not). Both compared, one branch for the two
-    /// (`&`): the usual step's test too.
+    /// Whether a state of squared offset and speed is within the spring's rest tolerances (a
+    /// NaN is not): the test the usual step's [`SpringVector::steps_on`] makes too.
     #[inline]
-    fn is_at_rest(&self, (offset_squared, speed_squared): (f32, f32)) -> bool {
-        let (offset_tolerance, speed_tolerance) = self.rest_squared;
-        (offset_squared <= offset_tolerance) & (speed_squared <= speed_tolerance)
+    fn is_at_rest(&self, squared: (f32, f32)) -> bool {
+        crate::space::is_within_rest(squared, self.rest_squared)
     }
 
     /// The end of a step to `(offset, velocity)` with squared lengths `squared`: at rest (toward
