@@ -189,6 +189,54 @@ fn many_springs_match_one_spring_each() {
     }
 }
 
+/// In a scene of 3000 springs (several chunks, and blocks of rows whose change ticks the step
+/// tests together), springs retargeted at the edges of blocks and chunks turn toward their new
+/// targets the very next frame, as the exact step from their state says, and the springs
+/// around them, untouched, go on toward their old ones.
+#[test]
+fn retargets_anywhere_in_a_large_scene_apply_the_next_frame() {
+    let spring = Spring::from_natural_frequency(6.0, 0.7).unwrap();
+    let mut app = app(60);
+    let springs: Vec<_> = (0..3000)
+        .map(|i| {
+            let target = Vec3::new(i as f32, 100.0, -50.0);
+            spawn_translation(&mut app, spring, Vec3::ZERO, target)
+        })
+        .collect();
+    run(&mut app, 10);
+    let retargeted = [0, 1, 255, 256, 257, 511, 1000, 2047, 2048, 2999];
+    let before: Vec<_> = springs
+        .iter()
+        .map(|&entity| {
+            let velocity = motion::<Translation>(&app, entity).velocity();
+            (translation(&app, entity), velocity)
+        })
+        .collect();
+    let new_target = |i: usize| Vec3::new(-(i as f32), -40.0, 30.0);
+    for &i in &retargeted {
+        app.world_mut()
+            .get_mut::<TranslationSpring>(springs[i])
+            .unwrap()
+            .set_target(new_target(i));
+    }
+    app.update();
+    let transition = spring.transition(1.0 / 60.0);
+    for (i, (&entity, &(position, velocity))) in springs.iter().zip(&before).enumerate() {
+        let target = if retargeted.contains(&i) {
+            new_target(i)
+        } else {
+            Vec3::new(i as f32, 100.0, -50.0)
+        };
+        let step = transition.step(SpringState::new(position, velocity), target);
+        let moved = translation(&app, entity);
+        assert!(
+            moved.distance(step.position) <= 1e-4 * (1.0 + step.position.length()),
+            "spring {i}: {moved} vs {}",
+            step.position
+        );
+    }
+}
+
 /// Every preset toward targets from 1e3 to 1e6 away, in `f32`, at 144 and 360 fps, in a scene
 /// large enough (3000 springs, more than a chunk of 2048) that it steps in chunks split over the
 /// compute pool's thread and the calling one: every spring arrives, asleep exactly on its target,

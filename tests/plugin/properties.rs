@@ -252,3 +252,78 @@ fn scale_never_passes_through_zero_but_signed_scale_may() {
         Vec3::new(-1.0, 2.0, 1.0)
     );
 }
+
+/// A value written by something else mid-flight (a drag, a reset, another system) is sprung
+/// on from where it was put, with the velocity the spring had: the next frame is the exact
+/// step from there. For a translation (`Linear`), a scale and a UI scale (`NeverThroughZero`,
+/// whose usual step tests the written value after the step, with its sign test).
+#[test]
+fn a_value_written_mid_flight_is_sprung_on_from_where_it_was_put() {
+    let spring = Spring::from_natural_frequency(10.0, 0.6).unwrap();
+    let transition = spring.transition(1.0 / 60.0);
+    let mut app = app(60);
+    let target = Vec3::new(3.0, 2.0, 4.0);
+    let translation = app
+        .world_mut()
+        .spawn((Transform::default(), TranslationSpring::new(spring, target)))
+        .id();
+    let scale = app
+        .world_mut()
+        .spawn((Transform::default(), ScaleSpring::new(spring, target)))
+        .id();
+    let ui_scale = app
+        .world_mut()
+        .spawn((
+            UiTransform::default(),
+            UiScaleSpring::new(spring, target.truncate()),
+        ))
+        .id();
+    run(&mut app, 6);
+    let put = Vec3::new(2.5, 0.5, 1.5);
+    let velocities = (
+        motion::<Translation>(&app, translation).velocity(),
+        motion::<Scale>(&app, scale).velocity(),
+        motion::<bevy_sprung::ui::UiTransformScale>(&app, ui_scale).velocity(),
+    );
+    assert!(
+        velocities.0.length() > 1.0,
+        "still moving: {}",
+        velocities.0
+    );
+    {
+        let world = app.world_mut();
+        world.get_mut::<Transform>(translation).unwrap().translation = put;
+        world.get_mut::<Transform>(scale).unwrap().scale = put;
+        world.get_mut::<UiTransform>(ui_scale).unwrap().scale = put.truncate();
+    }
+    app.update();
+    let step = |velocity: Vec3| {
+        transition
+            .step(sprung::SpringState::new(put, velocity), target)
+            .position
+    };
+    let moved = [
+        (
+            app.world()
+                .get::<Transform>(translation)
+                .unwrap()
+                .translation,
+            step(velocities.0),
+        ),
+        (
+            app.world().get::<Transform>(scale).unwrap().scale,
+            step(velocities.1),
+        ),
+        (
+            app.world()
+                .get::<UiTransform>(ui_scale)
+                .unwrap()
+                .scale
+                .extend(0.0),
+            step(velocities.2.extend(0.0)).truncate().extend(0.0),
+        ),
+    ];
+    for (moved, expected) in moved {
+        assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+    }
+}

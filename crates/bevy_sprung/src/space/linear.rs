@@ -239,7 +239,7 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
             before,
             [after.offset, after.remainder, velocity],
         );
-        (Carried { offset, remainder }, velocity)
+        (Carried { remainder, offset }, velocity)
     }
 
     /// Only where no component may have crossed zero: a step that may is the general one.
@@ -254,6 +254,8 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
         SpringVector::keeps_sign(S::coordinates(target), before, after.offset)
             .then_some((after, velocity))
     }
+
+    const CONSTRAINS_USUAL_STEP: bool = true;
 
     const DEFAULT_REST: sprung::RestThreshold<f32> = S::DEFAULT_REST;
 }

@@ -200,18 +200,22 @@ impl<P: SpringProperty> fmt::Debug for VelocityChange<P> {
 /// ```
 #[derive(Component, Reflect)]
 #[reflect(Component, Default, Debug, Clone)]
+#[repr(C)]
 pub struct SpringMotion<P: SpringProperty> {
-    /// The velocity in the offset's space.
+    /// The offset of the value from `active_target` after the last step, with the digits the
+    /// value itself cannot hold, and those the offset cannot.
+    #[reflect(ignore)]
+    offset: Carried<OffsetOf<P>>,
+    /// The velocity in the offset's space: right after the offset (the last field of
+    /// [`Carried`]; the fields are in declared order), so that a `Vec2` spring's state
+    /// `[offset, velocity]` is one 16-byte load (1 instruction a UI scale spring, 4 a UI
+    /// translation's, callgrind).
     velocity: OffsetOf<P>,
     /// The target the spring moved toward in its last step: a `target` that differs was set
     /// since (a retarget), and a hidden spring catches up under this one first. While nothing
     /// but the stepping system touches the spring, it is the spring's target.
     #[reflect(ignore)]
     active_target: ValueOf<P>,
-    /// The offset of the value from `active_target` after the last step, with the digits the
-    /// value itself cannot hold, and those the offset cannot.
-    #[reflect(ignore)]
-    offset: Carried<OffsetOf<P>>,
     /// Time not yet simulated while hidden, in seconds.
     #[reflect(ignore)]
     pending: f32,

@@ -211,19 +211,26 @@ impl<P: SpringProperty> SpringMotion<P> {
         let (y, v) = (before.offset, self.velocity);
         // A value written by something else since (rare) is stepped the general way: here
         // the offset is always the carried one, and its sum with the target is shared with
-        // the step's own.
+        // the step's own. A space whose step may be declined after it tests this then too, in
+        // the same branch (`SpringSpace::CONSTRAINS_USUAL_STEP`).
         let written = P::Space::is_written(current, target, before);
+        let (written_now, written_after) = if P::Space::CONSTRAINS_USUAL_STEP {
+            (true, written)
+        } else {
+            (written, true)
+        };
         // Rest, and range, are tested on the state the step starts from: the test then waits
         // on nothing the step computes, and the two run side by side (8% faster on two cores
         // than testing the result). A spring settles the frame after its state came within
         // its tolerances. Within the table's limit (a NaN is not), the step's result is finite
         // and of finite squared length: it needs no test of its own.
-        if !(written & SpringVector::steps_on(y, v, self.rest_squared, limit)) {
+        if !(written_now & SpringVector::steps_on(y, v, self.rest_squared, limit)) {
             return UsualStep::Declined;
         }
         let (moved, accelerated) = SpringVector::step_increments(y, v, increments);
         let (after, velocity) = (before.plus(moved), v + accelerated);
-        let Some((after, velocity)) = P::Space::constrain_usual(target, y, after, velocity) else {
+        let constrained = P::Space::constrain_usual(target, y, after, velocity);
+        let (Some((after, velocity)), true) = (constrained, written_after) else {
             return UsualStep::Declined;
         };
         self.offset = after;
