@@ -257,36 +257,39 @@ glam_vector!(Vec2, {
 });
 glam_vector!(Vec3A, {
     /// Both squared lengths at once, the squares interleaved (`[x, x', y, y']` and
-    /// `[z, z', ·, ·]`) and summed in the order of `Vec3A::length_squared`.
+    /// `[z, z', ·, ·]`) and summed in the order of `Vec3A::length_squared`: `x + y` in lanes 0
+    /// and 1 and `y + x`, the same bits, in lanes 2 and 3, so that no shuffle copies them.
     #[inline]
     fn steps_on(offset: Vec3A, velocity: Vec3A, rest_squared: (f32, f32), limit: f32) -> bool {
         let (offset, velocity) = (offset * offset, velocity * velocity);
         let xy = Vec4::new(offset.x, velocity.x, offset.y, velocity.y);
         let z = Vec4::new(offset.z, velocity.z, offset.z, velocity.z);
-        steps_on_by_lengths((xy + xy.zwzw()) + z, rest_squared, limit)
+        steps_on_by_lengths((xy + xy.zwxy()) + z, rest_squared, limit)
     }
 });
 glam_vector!(Vec4, {
     /// Both squared lengths at once, the squares interleaved (`[x, x', y, y']` and
-    /// `[z, z', w, w']`) and summed in the order of `Vec4::length_squared`.
+    /// `[z, z', w, w']`) and summed in the order of `Vec4::length_squared` (lanes 2 and 3 with
+    /// the last sum's terms swapped: the same bits).
     #[inline]
     fn steps_on(offset: Vec4, velocity: Vec4, rest_squared: (f32, f32), limit: f32) -> bool {
         let (offset, velocity) = (offset * offset, velocity * velocity);
         let xy = Vec4::new(offset.x, velocity.x, offset.y, velocity.y);
         let zw = Vec4::new(offset.z, velocity.z, offset.w, velocity.w);
         let sums = xy + zw;
-        steps_on_by_lengths(sums + sums.zwzw(), rest_squared, limit)
+        steps_on_by_lengths(sums + sums.zwxy(), rest_squared, limit)
     }
 });
 
-/// [`SpringVector::steps_on`] from the squared `lengths` of the offset and the velocity in
-/// lanes 0 and 1: both compared at once with `[rest offset, rest speed, limit, limit]`.
+/// [`SpringVector::steps_on`] from the squared `lengths` `[offset, velocity, offset,
+/// velocity]` (each pair computed alike, so that no shuffle copies them): compared at once
+/// with `[rest offset, rest speed, limit, limit]`.
 #[inline]
 fn steps_on_by_lengths(lengths: Vec4, rest_squared: (f32, f32), limit: f32) -> bool {
     let bounds = Vec2::from(rest_squared).extend(limit).extend(limit);
     // Bits 0 and 1: at rest; 2 and 3: in range. Both in range and not both at rest is 12, 13
     // or 14 (a NaN length is neither).
-    let within = lengths.xyxy().cmple(bounds).bitmask();
+    let within = lengths.cmple(bounds).bitmask();
     within.wrapping_sub(0b1100) < 0b11
 }
 
