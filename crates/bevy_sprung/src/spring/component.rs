@@ -224,10 +224,30 @@ pub struct SpringMotion<P: SpringProperty> {
     #[reflect(ignore)]
     rest_squared: (f32, f32),
     /// The ticket of the spring's slot in its property's transition table
-    /// ([`TransitionTable::NO_TICKET`]: none). While nothing but the stepping system touches
-    /// the spring, its transition is one indexed load.
+    /// ([`TransitionTable::NO_TICKET`]: none; see [`ticket`](Self::ticket)). While nothing but
+    /// the stepping system touches the spring, its transition is one indexed load.
     #[reflect(ignore)]
-    ticket: u64,
+    ticket: SlotTicket,
+}
+
+/// A `u64` ticket kept as two `u32` halves: aligned to 4 bytes, so that a motion whose other
+/// fields are (a `Vec2` or `f32` spring's) packs into 52 bytes rather than being padded to 56.
+/// Read back as one 8-byte load.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct SlotTicket([u32; 2]);
+
+impl SlotTicket {
+    #[inline]
+    fn new(ticket: u64) -> Self {
+        // The low and the high half.
+        #[expect(clippy::cast_possible_truncation, reason = "split in halves")]
+        Self([ticket as u32, (ticket >> 32) as u32])
+    }
+
+    #[inline]
+    fn get(self) -> u64 {
+        u64::from(self.0[0]) | (u64::from(self.0[1]) << 32)
+    }
 }
 
 impl<P: SpringProperty> Default for SpringMotion<P> {
@@ -245,7 +265,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             offset: Carried::new(OffsetOf::<P>::ZERO),
             pending: 0.0,
             rest_squared: rest_squared::<P>(rest, target),
-            ticket: TransitionTable::NO_TICKET,
+            ticket: SlotTicket::new(TransitionTable::NO_TICKET),
         }
     }
 
@@ -256,6 +276,18 @@ impl<P: SpringProperty> SpringMotion<P> {
     #[must_use]
     pub fn velocity(&self) -> VelocityOf<P> {
         self.velocity.into()
+    }
+
+    /// The ticket of the spring's slot in its property's transition table.
+    #[inline]
+    pub(crate) fn ticket(&self) -> u64 {
+        self.ticket.get()
+    }
+
+    /// Remembers `ticket` as the spring's slot's.
+    #[inline]
+    pub(crate) fn set_ticket(&mut self, ticket: u64) {
+        self.ticket = SlotTicket::new(ticket);
     }
 }
 

@@ -331,3 +331,12 @@ fn a_translation_spring_streams_80_bytes() {
     let configuration = size_of::<TranslationSpring>();
     assert!(configuration <= 64, "configuration: {configuration} bytes");
 }
+
+/// A `Vec2` spring's motion is packed: no padding after its 4-byte fields (the ticket is kept
+/// in 4-byte halves), 52 bytes where an 8-byte-aligned ticket made it 56.
+#[cfg(feature = "ui")]
+#[test]
+fn a_ui_scale_spring_streams_52_bytes() {
+    let motion = size_of::<SpringMotion<crate::ui::UiTransformScale>>();
+    assert!(motion <= 52, "motion: {motion} bytes");
+}

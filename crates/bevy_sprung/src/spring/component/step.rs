@@ -180,7 +180,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         prepared: PreparedIncrements,
     ) -> UsualStep<ValueOf<P>> {
         let found = if untouched {
-            prepared.increments(self.ticket)
+            prepared.increments(self.ticket())
         } else {
             None
         };
@@ -259,7 +259,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         // A spring whose increments the usual step found (`looked_up`: it looked) was declined
         // for its state, or for its value: the general step. One that was touched (or whose
         // table was cleared) may still step the usual way, from its slot.
-        let found = looked_up && table.increments(self.ticket).is_some();
+        let found = looked_up && table.increments(self.ticket()).is_some();
         if !found
             && let Some(increments) = self.touched_increments(config, &steps, hidden, table)
             && let Some(frame) = self
@@ -270,7 +270,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         }
         let dt = steps.dt(config.clock);
         let frame = self.step_general(config, current, dt, hidden, (table, cache));
-        self.ticket = TransitionTable::NO_TICKET;
+        self.set_ticket(TransitionTable::NO_TICKET);
         frame
     }
 
@@ -288,7 +288,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
         let dt = steps.dt(config.clock);
-        self.ticket = TransitionTable::NO_TICKET;
+        self.set_ticket(TransitionTable::NO_TICKET);
         if preference == ReducedMotion::Snap {
             self.repair(config, current, table);
             let target = config.target;
@@ -352,8 +352,8 @@ impl<P: SpringProperty> SpringMotion<P> {
         }
         // Touched: the tolerances may have changed too (a `rest` set through reflection).
         self.rest_squared = super::rest_squared::<P>(config.rest, config.target);
-        let ticket = if table.holds(self.ticket, &config.spring, clock) {
-            self.ticket
+        let ticket = if table.holds(self.ticket(), &config.spring, clock) {
+            self.ticket()
         } else if let Some(ticket) = table.lookup(&config.spring, clock) {
             ticket
         } else {
@@ -361,7 +361,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             table.request(&config.spring, clock);
             return None;
         };
-        self.ticket = ticket;
+        self.set_ticket(ticket);
         Some(ticket)
     }
 
@@ -483,7 +483,7 @@ impl<P: SpringProperty> SpringMotion<P> {
                  valid ones"
             );
             // Its slot holds the parameters it last stepped with, which were valid.
-            config.spring = table.parameters(self.ticket).unwrap_or_default();
+            config.spring = table.parameters(self.ticket()).unwrap_or_default();
         }
     }
 
