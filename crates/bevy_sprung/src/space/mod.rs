@@ -33,9 +33,9 @@ pub(crate) use vector::is_within_rest;
 /// away and the spring would not start; near it, the value itself cannot hold the offset. With
 /// the remainder neither happens: the offset moves exactly as the closed form says.
 ///
-/// The remainder is laid out first, so that a [`SpringMotion`](crate::spring::SpringMotion) can keep
-/// its velocity right after the offset: the state `[offset, velocity]` of a `Vec2` spring is one
-/// 16-byte load.
+/// The remainder is laid out first, so that a [`SpringMotion`](crate::spring::SpringMotion) can
+/// keep its velocity right after the offset: the state `[offset, velocity]` of a `Vec2` spring
+/// is one 16-byte load.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[repr(C)]
 pub struct Carried<V> {

@@ -233,7 +233,7 @@ pub struct SpringMotion<P: SpringProperty> {
 /// A `u64` ticket kept as two `u32` halves: aligned to 4 bytes, so that a motion whose other
 /// fields are (a `Vec2` or `f32` spring's) packs into 52 bytes rather than being padded to 56.
 /// Read back as one 8-byte load.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy)]
 struct SlotTicket([u32; 2]);
 
 impl SlotTicket {

@@ -82,7 +82,14 @@ fn increment_step<V: SpringVector>(
     v: V,
 ) -> (Carried<V>, V) {
     let [[d00, d01], [d10, d11]] = transition.increment_matrix();
-    let (moved, accelerated) = V::step_increments(y.offset, v, Vec4::new(d00, d01, d10, d11));
+    step_by_increments(y, v, Vec4::new(d00, d01, d10, d11))
+}
+
+/// One step of offset `y` and velocity `v` by a transition's `increments`
+/// `[d00, d01, d10, d11]`: what the general step and the usual one both add.
+#[inline]
+fn step_by_increments<V: SpringVector>(y: Carried<V>, v: V, increments: Vec4) -> (Carried<V>, V) {
+    let (moved, accelerated) = V::step_increments(y.offset, v, increments);
     (y.plus(moved), v + accelerated)
 }
 
@@ -227,8 +234,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         if !(written_now & SpringVector::steps_on(y, v, self.rest_squared, limit)) {
             return UsualStep::Declined;
         }
-        let (moved, accelerated) = SpringVector::step_increments(y, v, increments);
-        let (after, velocity) = (before.plus(moved), v + accelerated);
+        let (after, velocity) = step_by_increments(before, v, increments);
         let constrained = P::Space::constrain_usual(target, y, after, velocity);
         let (Some((after, velocity)), true) = (constrained, written_after) else {
             return UsualStep::Declined;
