@@ -41,10 +41,10 @@ use crate::transform::TransformSpringPlugin;
 /// ```
 ///
 /// # Using every core
-/// Springs step in parallel: each table's springs are split into chunks, a few per thread, run
-/// by Bevy's compute task pool and by the thread that runs the springs' schedule (the main
-/// thread: it runs the chunks too while it waits, and the pool's threads have nothing else to
-/// run then). Bevy gives the compute pool the cores left after one thread each for I/O and async
+/// Springs step in parallel: Bevy's compute task pool's threads and the thread that runs the
+/// springs' schedule (the main thread, which starts at once while the others wake; the pool's
+/// threads have nothing else to run then) each claim a part of a table's springs at a time,
+/// the parts shrinking as the springs run out, so that the threads finish together. Bevy gives the compute pool the cores left after one thread each for I/O and async
 /// tasks: on a machine with two cores one thread, so the springs step on both cores with
 /// Bevy's defaults. On more cores, ask for a compute thread per core (the I/O and async threads
 /// mostly sleep) to step them on all of them:

@@ -22,8 +22,8 @@ pub use color::OklabColor;
 pub use length::{Length, Length2};
 pub use linear::{AffineSpace, Linear, LinearValue, NeverThroughZero};
 pub use rotation::{ShortestAngle, ShortestArc, rotation_vector};
-pub use vector::SpringVector;
 pub(crate) use vector::is_within_rest;
+pub use vector::{SpringVector, paired_increments};
 
 /// An offset carried between steps as an unevaluated sum `offset + remainder`, where the
 /// remainder holds what rounding dropped from `offset` (compensated summation).

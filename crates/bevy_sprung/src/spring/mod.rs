@@ -4,6 +4,7 @@
 mod cache;
 mod component;
 mod event;
+mod parallel;
 mod plugin;
 mod systems;
 mod table;

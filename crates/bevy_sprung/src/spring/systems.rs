@@ -4,16 +4,16 @@ use bevy::ecs::change_detection::{ContiguousComponentTicksMut, ContiguousMut, Ma
 use bevy::ecs::change_detection::{ContiguousRef, MAX_CHANGE_AGE, Tick};
 use bevy::ecs::system::ParallelCommands;
 use bevy::prelude::*;
-use bevy::tasks::ComputeTaskPool;
 use bevy::utils::Parallel;
 
 use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringAsleep, SpringMotion, Stepped, UsualStep};
 use super::event::SpringSettled;
-use super::table::{PreparedIncrements, TransitionTable, scope_threads};
+use super::parallel::{SplitRows, scope_threads, split_over_threads};
+use super::table::{PreparedIncrements, TransitionTable};
 use crate::choreography::{SettleTracker, SpringGroup};
 use crate::clock::{FrameSteps, SpringTime};
-use crate::property::SpringProperty;
+use crate::property::{OffsetOf, SpringProperty};
 use crate::reduced_motion::{KeepMotion, ReducedMotion};
 
 /// Springs that never skip a frame: the common case, with nothing to fetch for visibility.
@@ -22,8 +22,8 @@ type Seen = Without<crate::visibility::CatchUpWhenHidden>;
 #[cfg(not(feature = "visibility"))]
 type Seen = ();
 
-/// Steps every awake spring on property `P`, a table's columns at a time (split into chunks
-/// run by the compute pool's threads and this one, when there are enough springs), and puts
+/// Steps every awake spring on property `P`, a table's columns at a time (split into parts
+/// that the compute pool's threads and this one claim, when there are enough springs), and puts
 /// the ones that settle to sleep (triggering [`SpringSettled<P>`]).
 ///
 /// This system runs in [`SpringUpdate`](crate::SpringUpdate), which an exclusive system runs
@@ -70,7 +70,7 @@ pub(crate) fn step_springs<P: SpringProperty>(
 ) {
     let steps = time.steps();
     let table = &mut *table;
-    table.prepare(steps);
+    table.prepare_for::<OffsetOf<P>>(steps);
     let count = springs.iter().len();
     #[cfg(feature = "visibility")]
     let count = count + catching_up.iter().len();
@@ -218,11 +218,55 @@ type StepContext<'a> = (
     &'a ParallelCommands<'a, 'a>,
 );
 
-/// Rows of a table per parallel task, at least: enough work to outweigh handing it out.
-const STEP_CHUNK: usize = 2048;
+/// Rows of a table a thread claims at least (see [`split_over_threads`]): a few blocks of
+/// [`TOUCH_BLOCK`], about a microsecond of stepping, so that the threads finish close together
+/// while claiming costs little.
+const STEP_GRAIN: usize = 2 * TOUCH_BLOCK;
+
+/// Rows of a table above which its springs are stepped on several threads: enough work to
+/// outweigh waking them.
+const STEP_PARALLEL: usize = 2048;
+
+/// The columns of a table's awake springs (or a part of them), and their change ticks.
+struct TableRows<'a, P: SpringProperty> {
+    entities: &'a [Entity],
+    configs: &'a mut [PropertySpring<P>],
+    motions: &'a mut [SpringMotion<P>],
+    components: &'a mut [P::Component],
+    config_changed: &'a [Tick],
+    component_changed: &'a mut [Tick],
+    motion_changed: &'a mut [Tick],
+}
+
+impl<P: SpringProperty> SplitRows for TableRows<'_, P> {
+    #[inline]
+    fn len(&self) -> usize {
+        self.motions.len()
+    }
+
+    #[inline]
+    fn take_front(&mut self, rows: usize) -> Self {
+        let rows = rows.min(self.len());
+        Self {
+            entities: self.entities.split_off(..rows).unwrap_or_default(),
+            configs: self.configs.split_off_mut(..rows).unwrap_or_default(),
+            motions: self.motions.split_off_mut(..rows).unwrap_or_default(),
+            components: self.components.split_off_mut(..rows).unwrap_or_default(),
+            config_changed: self.config_changed.split_off(..rows).unwrap_or_default(),
+            component_changed: self
+                .component_changed
+                .split_off_mut(..rows)
+                .unwrap_or_default(),
+            motion_changed: self
+                .motion_changed
+                .split_off_mut(..rows)
+                .unwrap_or_default(),
+        }
+    }
+}
 
 /// The awake, visible springs of one table, from its columns: [`step_entity`] for each, without
-/// the per-entity `Mut` wrappers, in chunks on a compute-pool scope's `threads` (the pool's and
+/// the per-entity `Mut` wrappers, split over a compute-pool scope's `threads` (the pool's and
 /// this one, [`scope_threads`]) if there are several.
 /// Every motion is marked changed (it was stepped), a property only where it moved; the
 /// configurations are read where they changed, and not marked.
@@ -241,43 +285,28 @@ fn step_table<P: SpringProperty>(
     let (components, mut component_ticks) =
         ContiguousMut::bypass_change_detection_split(components);
     let ticks = (config_ticks.last_run(), config_ticks.this_run());
-    let config_changed = config_ticks.changed();
-    let component_changed = component_ticks.changed_mut();
-    // Every stepped motion is changed: marked chunk by chunk on the threads that step them,
+    // Every stepped motion is changed: marked part by part on the threads that step them,
     // not in a pass of its own on this thread afterwards (a 400 kB write at 100 000 springs).
-    let motion_changed = motion_ticks.changed_mut();
-    // Chunks that give every thread a few, so that one slow chunk does not hold up the rest.
-    // (A pool of no threads runs its tasks on this one.)
-    let chunk = (motions.len() / (4 * threads.max(1))).max(STEP_CHUNK);
-    if threads > 1 && motions.len() > chunk {
-        ComputeTaskPool::get().scope(|scope| {
-            let chunks = entities
-                .chunks(chunk)
-                .zip(configs.chunks_mut(chunk).zip(motions.chunks_mut(chunk)))
-                .zip(components.chunks_mut(chunk))
-                .zip(config_changed.chunks(chunk))
-                .zip(
-                    component_changed
-                        .chunks_mut(chunk)
-                        .zip(motion_changed.chunks_mut(chunk)),
-                );
-            for ((((entities, rows), components), config_changed), changed) in chunks {
-                scope.spawn(async move {
-                    step_rows(
-                        (entities, rows, components),
-                        (config_changed, changed, ticks),
-                        context,
-                    );
-                });
-            }
-        });
+    let rows = TableRows {
+        entities,
+        configs,
+        motions,
+        components,
+        config_changed: config_ticks.changed(),
+        component_changed: component_ticks.changed_mut(),
+        motion_changed: motion_ticks.changed_mut(),
+    };
+    let threads = if rows.len() > STEP_PARALLEL {
+        threads
     } else {
-        step_rows(
-            (entities, (configs, motions), components),
-            (config_changed, (component_changed, motion_changed), ticks),
-            context,
-        );
-    }
+        1
+    };
+    split_over_threads(
+        rows,
+        (threads, STEP_GRAIN),
+        |rows| step_rows(rows, ticks, context),
+        ((), |(), ()| ()),
+    );
     mark_changed_by(&mut motion_ticks, |_| true);
     let this_run = component_ticks.this_run();
     mark_changed_by(&mut component_ticks, |tick| tick == this_run);
@@ -292,18 +321,19 @@ fn step_table<P: SpringProperty>(
 /// no test of their own, about 3 instructions a spring fewer (callgrind).
 #[inline(never)]
 fn step_rows<P: SpringProperty>(
-    (entities, (configs, motions), components): (
-        &[Entity],
-        (&mut [PropertySpring<P>], &mut [SpringMotion<P>]),
-        &mut [P::Component],
-    ),
-    (config_changed, (component_changed, motion_changed), (last_run, this_run)): (
-        &[Tick],
-        (&mut [Tick], &mut [Tick]),
-        (Tick, Tick),
-    ),
+    rows: TableRows<P>,
+    (last_run, this_run): (Tick, Tick),
     context: StepContext,
 ) {
+    let TableRows {
+        entities,
+        configs,
+        motions,
+        components,
+        config_changed,
+        component_changed,
+        motion_changed,
+    } = rows;
     motion_changed.fill(this_run);
     let (_, table, _, _) = context;
     let prepared = table.prepared();

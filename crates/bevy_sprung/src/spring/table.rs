@@ -1,14 +1,16 @@
 //! Every distinct spring's transition, kept across frames: what the per-entity step reads.
 
+use core::marker::PhantomData;
 use core::sync::atomic::{AtomicBool, Ordering};
 
 use bevy::math::{BVec4A, Mat4, Vec4};
 use bevy::platform::collections::HashMap;
-use bevy::tasks::ComputeTaskPool;
 use bevy::utils::Parallel;
 use sprung::{Spring, Transition};
 
+use super::parallel::{SplitRows, scope_threads, split_over_threads};
 use crate::clock::FrameSteps;
+use crate::space::{SpringVector, paired_increments};
 
 /// What makes a slot: the bits of the spring's parameters, and the clock index
 /// ([`FrameSteps`](crate::clock::FrameSteps)).
@@ -185,7 +187,7 @@ impl AnchorLanes {
     };
 
     /// Makes the increments of the four slots (`increments`, by lane; `slots`: the slots of
-    /// the lanes' chunk, by reference so that the loop does not store the slice every block,
+    /// the lanes' part, by reference so that the loop does not store the slice every block,
     /// and this block's index in it) those over their time steps `dt`,
     /// extended together (inline: a game's time step changes every frame, and this is a few
     /// vector multiply-adds per four slots), or computed exactly where out of reach. The
@@ -266,6 +268,10 @@ pub(crate) struct TransitionTable {
     /// Each slot's increments `D = M − I` over this frame's time step, row-major, by the same
     /// index (16 bytes: all the per-entity step reads), padded to a multiple of four.
     increments: Vec<Vec4>,
+    /// Whether the table is for a vector that reads its increments in pairs
+    /// ([`SpringVector::PAIRED_INCREMENTS`]): then `paired` holds them so, by the same index.
+    pairs: bool,
+    paired: Vec<[Vec4; 2]>,
     /// The anchors the slots' increments are extended from, four slots a lane each.
     lanes: Vec<AnchorLanes>,
     /// The clock index ([`FrameSteps`]) of each lane, by the same index as `lanes`.
@@ -292,19 +298,58 @@ pub(crate) struct TransitionTable {
 #[derive(Clone, Copy)]
 pub(crate) struct PreparedIncrements<'a> {
     increments: &'a [Vec4],
+    paired: &'a [[Vec4; 2]],
     first: u64,
     step_limit: f32,
 }
 
-impl PreparedIncrements<'_> {
-    /// The increments of the slot with `ticket`, if the table has it: one subtraction and one
-    /// bounds check find it.
+/// A slot's increments as the usual step of a `V` reads them: `[d00, d01, d10, d11]`, or the
+/// pairs of [`paired_increments`] for a vector that reads them so
+/// ([`SpringVector::PAIRED_INCREMENTS`]).
+#[derive(Clone, Copy)]
+pub(crate) struct SlotIncrements<V>([Vec4; 2], PhantomData<V>);
+
+impl<V: SpringVector> SlotIncrements<V> {
+    /// A transition's `increments` `[d00, d01, d10, d11]`, as `V` reads them.
     #[inline]
-    pub(crate) fn increments(self, ticket: u64) -> Option<Vec4> {
+    pub(crate) fn of(increments: Vec4) -> Self {
+        let read = if V::PAIRED_INCREMENTS {
+            paired_increments(increments)
+        } else {
+            [increments, Vec4::ZERO]
+        };
+        Self(read, PhantomData)
+    }
+
+    /// What one step adds to an `offset` and a `velocity` (see
+    /// [`SpringVector::step_increments`]).
+    #[inline]
+    pub(crate) fn step(self, offset: V, velocity: V) -> (V, V) {
+        if V::PAIRED_INCREMENTS {
+            V::step_paired_increments(offset, velocity, self.0)
+        } else {
+            V::step_increments(offset, velocity, self.0[0])
+        }
+    }
+}
+
+impl PreparedIncrements<'_> {
+    /// The increments of the slot with `ticket` as a `V` reads them, if the table has it:
+    /// one subtraction and one bounds check find it.
+    #[inline]
+    pub(crate) fn increments<V: SpringVector>(self, ticket: u64) -> Option<SlotIncrements<V>> {
         // The padding past the last slot holds no ticket's increments, but reading it is
         // harmless: a ticket past the last slot was never handed out.
         let index = usize::try_from(ticket.wrapping_sub(self.first)).ok()?;
-        self.increments.get(index).copied()
+        if V::PAIRED_INCREMENTS {
+            // Empty unless the table was prepared for such a vector (then declined: the
+            // general step).
+            let pairs = self.paired.get(index)?;
+            Some(SlotIncrements(*pairs, PhantomData))
+        } else {
+            let rows = self.increments.get(index)?;
+            Some(SlotIncrements([*rows, Vec4::ZERO], PhantomData))
+        }
     }
 
     /// See [`TransitionTable::step_limit`].
@@ -360,17 +405,44 @@ impl IncrementsBound {
     }
 }
 
-/// The threads that run the tasks of a compute-pool scope: the pool's, and the thread that
-/// opened the scope, which runs them too while it waits (1 before the pool is made). The
-/// springs step inside an exclusive system, on the thread that runs the schedule (the main
-/// thread), while the pool's threads have nothing else to run: on a machine with two cores,
-/// where Bevy gives the pool one thread, that is both cores.
-pub(crate) fn scope_threads() -> usize {
-    ComputeTaskPool::try_get().map_or(1, |pool| pool.thread_num() + 1)
+/// Slots above which the preparation is split over threads: enough work to outweigh waking
+/// them.
+const PREPARE_PARALLEL: usize = 4096;
+
+/// Blocks of four slots a thread claims at least when the preparation is split (see
+/// [`split_over_threads`]): about a microsecond of extending.
+const PREPARE_GRAIN: usize = 64;
+
+/// The blocks of a [`TransitionTable`] (or a part of them) that its preparation writes: the
+/// anchor lanes, their clocks, and the increments and slots of their four slots each.
+struct PrepareRows<'a> {
+    lanes: &'a mut [AnchorLanes],
+    clocks: &'a [[u8; 4]],
+    increments: &'a mut [Vec4],
+    slots: &'a [Slot],
 }
 
-/// Slots per parallel task when preparing: enough work to outweigh handing it out.
-const PREPARE_CHUNK: usize = 4096;
+impl SplitRows for PrepareRows<'_> {
+    #[inline]
+    fn len(&self) -> usize {
+        self.lanes.len()
+    }
+
+    #[inline]
+    fn take_front(&mut self, blocks: usize) -> Self {
+        let blocks = blocks.min(self.len());
+        let slots = (4 * blocks).min(self.slots.len());
+        Self {
+            lanes: self.lanes.split_off_mut(..blocks).unwrap_or_default(),
+            clocks: self.clocks.split_off(..blocks).unwrap_or_default(),
+            increments: self
+                .increments
+                .split_off_mut(..4 * blocks)
+                .unwrap_or_default(),
+            slots: self.slots.split_off(..slots).unwrap_or_default(),
+        }
+    }
+}
 
 impl TransitionTable {
     /// A ticket no slot ever has: what a spring without a slot remembers.
@@ -395,6 +467,7 @@ impl TransitionTable {
         if self
             .prepared_for
             .is_some_and(|prepared| prepared.same(steps))
+            && (!self.pairs || self.paired.len() == self.increments.len())
         {
             return;
         }
@@ -412,47 +485,48 @@ impl TransitionTable {
         }
     }
 
+    /// [`prepare`](Self::prepare) for the springs of a property whose offsets are `V`s: with
+    /// the increments also in pairs if `V` reads them so ([`SpringVector::PAIRED_INCREMENTS`]).
+    pub(crate) fn prepare_for<V: SpringVector>(&mut self, steps: FrameSteps) {
+        self.pairs = V::PAIRED_INCREMENTS;
+        self.prepare(steps);
+    }
+
     /// [`prepare`](Self::prepare) with `steps_of` giving the time steps of lanes on its clocks.
     #[inline]
-    fn prepare_with(&mut self, steps_of: impl Fn(&[u8; 4]) -> Vec4 + Copy + Send) {
+    fn prepare_with(&mut self, steps_of: impl Fn(&[u8; 4]) -> Vec4 + Copy + Send + Sync) {
         // The steps copied into the closure: captured by reference, a slot cost 4 instructions
         // more (callgrind) where the closure was not inlined.
-        // Each chunk returns the largest bound of its blocks' increments.
-        let prepare = move |(lanes, clocks): (&mut [AnchorLanes], &[[u8; 4]]),
-                            increments: &mut [Vec4],
-                            slots: &[Slot]| {
-            let (increments, _) = increments.as_chunks_mut::<4>();
-            let blocks = lanes.iter_mut().zip(clocks).zip(increments);
+        // Each part returns the largest bound of its blocks' increments.
+        let prepare = move |part: PrepareRows| {
+            let (increments, _) = part.increments.as_chunks_mut::<4>();
+            let blocks = part.lanes.iter_mut().zip(part.clocks).zip(increments);
             let mut bound = IncrementsBound::NONE;
             // The slots by block index: only a lane that needs an exact transition reads one.
             for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
-                bound.include(lanes.prepare(increments, (&slots, block), steps_of(clocks)));
+                bound.include(lanes.prepare(increments, (&part.slots, block), steps_of(clocks)));
             }
             bound.value()
         };
-        let bound = if scope_threads() > 1 && self.slots.len() > PREPARE_CHUNK {
-            ComputeTaskPool::get()
-                .scope(|scope| {
-                    let chunks = self
-                        .lanes
-                        .chunks_mut(PREPARE_CHUNK / 4)
-                        .zip(self.lane_clocks.chunks(PREPARE_CHUNK / 4))
-                        .zip(self.increments.chunks_mut(PREPARE_CHUNK))
-                        .zip(self.slots.chunks(PREPARE_CHUNK));
-                    for (((lanes, clocks), increments), slots) in chunks {
-                        scope.spawn(async move { prepare((lanes, clocks), increments, slots) });
-                    }
-                })
-                .into_iter()
-                .fold(0.0, f32::max)
+        let threads = if self.slots.len() > PREPARE_PARALLEL {
+            scope_threads()
         } else {
-            prepare(
-                (&mut self.lanes, &self.lane_clocks),
-                &mut self.increments,
-                &self.slots,
-            )
+            1
         };
+        let rows = PrepareRows {
+            lanes: &mut self.lanes,
+            clocks: &self.lane_clocks,
+            increments: &mut self.increments,
+            slots: &self.slots,
+        };
+        let bound = split_over_threads(rows, (threads, PREPARE_GRAIN), prepare, (0.0, f32::max));
         self.step_limit = step_limit_for(bound);
+        if self.pairs {
+            self.paired.resize(self.increments.len(), [Vec4::ZERO; 2]);
+            for (pairs, rows) in self.paired.iter_mut().zip(&self.increments) {
+                *pairs = paired_increments(*rows);
+            }
+        }
     }
 
     /// The squared length up to which, for the offset `|y|²` and the velocity `|v|²` both,
@@ -470,7 +544,8 @@ impl TransitionTable {
     /// it: one subtraction and one bounds check find it.
     #[inline]
     pub(crate) fn increments(&self, ticket: u64) -> Option<Vec4> {
-        self.prepared().increments(ticket)
+        let index = usize::try_from(ticket.wrapping_sub(self.first)).ok()?;
+        self.increments.get(index).copied()
     }
 
     /// What the usual step reads of the table, copied out of it: a loop over springs keeps it
@@ -481,6 +556,7 @@ impl TransitionTable {
     pub(crate) fn prepared(&self) -> PreparedIncrements<'_> {
         PreparedIncrements {
             increments: &self.increments,
+            paired: &self.paired,
             first: self.first,
             step_limit: self.step_limit,
         }
@@ -517,6 +593,7 @@ impl TransitionTable {
             self.first = self.first.wrapping_add(self.slots.len() as u64);
             self.slots.clear();
             self.increments.clear();
+            self.paired.clear();
             self.lanes.clear();
             self.lane_clocks.clear();
             self.index.clear();
@@ -576,13 +653,14 @@ impl TransitionTable {
 
 #[cfg(test)]
 mod tests {
-    use bevy::math::Vec4;
+    use bevy::math::{Vec2, Vec3A, Vec4};
     use sprung::Spring;
 
     use super::{
         Anchor, AnchorLanes, IncrementsBound, STEP_RESULT_BOUND, TransitionTable, step_limit_for,
     };
     use crate::clock::FrameSteps;
+    use crate::space::paired_increments;
 
     /// `anchor`'s increments over `dt`, if within reach, from lane `lane` of lanes holding it
     /// there and other anchors elsewhere.
@@ -679,7 +757,17 @@ mod tests {
                 first,
                 "slots are made in the order asked for"
             );
-            let got = table.increments(slot).unwrap().to_array();
+            let rows = table.increments(slot).unwrap();
+            // What the usual step reads: the rows, and where the table keeps them, the pairs.
+            let prepared = table.prepared();
+            let bits = |vectors: [Vec4; 2]| vectors.map(|v| v.to_array().map(f32::to_bits));
+            let read = prepared.increments::<Vec3A>(slot).unwrap().0;
+            assert_eq!(bits(read)[0], bits([rows; 2])[0]);
+            if table.pairs {
+                let read = prepared.increments::<Vec2>(slot).unwrap().0;
+                assert_eq!(bits(read), bits(paired_increments(rows)), "slot {slot}");
+            }
+            let got = rows.to_array();
             worst = worst.max(error_in_u(got, *spring, f64::from(steps.of(*clock))));
         }
         worst
@@ -783,7 +871,7 @@ mod tests {
 
     /// A frame with the same steps as the last skips the table, yet slots added since (in a
     /// block already prepared, and in a new one) are prepared for them, as are all slots after
-    /// a clearing.
+    /// a clearing; for a `Vec2`, in pairs too.
     #[test]
     fn slots_added_under_the_same_steps_are_prepared() {
         let springs: Vec<(Spring<f32>, u8)> = (0..7_u8)
@@ -801,23 +889,23 @@ mod tests {
                 }
             }
             table.finish(count);
-            table.prepare(steps);
+            table.prepare_for::<Vec2>(steps);
             let worst = worst_prepared_error(&table, &springs[..count], steps);
             assert!(worst < 8.0, "{count} slots: {worst} u");
-            table.prepare(steps);
+            table.prepare_for::<Vec2>(steps);
         }
         table.finish(0);
         let (spring, clock) = springs[6];
         table.request(&spring, clock);
         table.finish(1);
-        table.prepare(steps);
+        table.prepare_for::<Vec2>(steps);
         assert!(worst_prepared_error(&table, &[(spring, clock)], steps) < 8.0);
     }
 
     /// A table that is collected (more than twice as many slots as springs) starts over: no
     /// spring finds its old slot (by key or by ticket), the tickets go on from where they
     /// were, and the slots made next fill the lanes from the first again, each prepared for its
-    /// own spring.
+    /// own spring (for a `Vec2`, in pairs too).
     #[test]
     fn a_collected_table_starts_its_lanes_over() {
         let springs = |count: u16, base: f32| -> Vec<(Spring<f32>, u8)> {
@@ -835,7 +923,7 @@ mod tests {
         }
         table.finish(first.len());
         let steps = FrameSteps::all(1.0 / 60.0);
-        table.prepare(steps);
+        table.prepare_for::<Vec2>(steps);
         assert!(worst_prepared_error(&table, &first, steps) < 8.0);
         let tickets: Vec<u64> = first
             .iter()
@@ -865,7 +953,7 @@ mod tests {
         assert!(table.increments(TransitionTable::NO_TICKET).is_none());
         for dt in [1.0 / 60.0, 1.0 / 60.0 * 1.0005] {
             let steps = FrameSteps::all(dt);
-            table.prepare(steps);
+            table.prepare_for::<Vec2>(steps);
             let worst = worst_prepared_error(&table, &second, steps);
             assert!(worst < 8.0, "{worst} u");
         }

@@ -18,7 +18,7 @@ use crate::property::{OffsetOf, SpringProperty, ValueOf};
 use crate::reduced_motion::ReducedMotion;
 use crate::space::{Carried, SpringSpace, SpringVector};
 use crate::spring::cache::TransitionCache;
-use crate::spring::table::{PreparedIncrements, TransitionTable};
+use crate::spring::table::{PreparedIncrements, SlotIncrements, TransitionTable};
 
 /// What one frame did to a spring, and the value to write, if it changed.
 #[derive(Clone, Copy, Debug)]
@@ -82,14 +82,19 @@ fn increment_step<V: SpringVector>(
     v: V,
 ) -> (Carried<V>, V) {
     let [[d00, d01], [d10, d11]] = transition.increment_matrix();
-    step_by_increments(y, v, Vec4::new(d00, d01, d10, d11))
+    let increments = SlotIncrements::of(Vec4::new(d00, d01, d10, d11));
+    step_by_increments(y, v, increments)
 }
 
-/// One step of offset `y` and velocity `v` by a transition's `increments`
-/// `[d00, d01, d10, d11]`: what the general step and the usual one both add.
+/// One step of offset `y` and velocity `v` by a transition's `increments`: what the general
+/// step and the usual one both add.
 #[inline]
-fn step_by_increments<V: SpringVector>(y: Carried<V>, v: V, increments: Vec4) -> (Carried<V>, V) {
-    let (moved, accelerated) = V::step_increments(y.offset, v, increments);
+fn step_by_increments<V: SpringVector>(
+    y: Carried<V>,
+    v: V,
+    increments: SlotIncrements<V>,
+) -> (Carried<V>, V) {
+    let (moved, accelerated) = increments.step(y.offset, v);
     (y.plus(moved), v + accelerated)
 }
 
@@ -187,7 +192,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         prepared: PreparedIncrements,
     ) -> UsualStep<ValueOf<P>> {
         let found = if untouched {
-            prepared.increments(self.ticket())
+            prepared.increments::<OffsetOf<P>>(self.ticket())
         } else {
             None
         };
@@ -207,7 +212,7 @@ impl<P: SpringProperty> SpringMotion<P> {
     #[inline(always)]
     fn step_by(
         &mut self,
-        increments: Vec4,
+        increments: SlotIncrements<OffsetOf<P>>,
         current: ValueOf<P>,
         limit: f32,
     ) -> UsualStep<ValueOf<P>> {
@@ -329,10 +334,10 @@ impl<P: SpringProperty> SpringMotion<P> {
         steps: &FrameSteps,
         hidden: bool,
         table: &TransitionTable,
-    ) -> Option<Vec4> {
+    ) -> Option<SlotIncrements<OffsetOf<P>>> {
         let clock = FrameSteps::index(config.clock);
         let ticket = self.usual_slot(config, steps.of(clock), clock, hidden, table)?;
-        table.increments(ticket)
+        table.prepared().increments::<OffsetOf<P>>(ticket)
     }
 
     /// The ticket of the spring's slot if this frame's step is the usual one (a visible spring
