@@ -44,8 +44,9 @@ use crate::transform::TransformSpringPlugin;
 /// Springs step in parallel: Bevy's compute task pool's threads and the thread that runs the
 /// springs' schedule (the main thread, which starts at once while the others wake; the pool's
 /// threads have nothing else to run then) each claim a part of a table's springs at a time,
-/// the parts shrinking as the springs run out, so that the threads finish together. Bevy gives the compute pool the cores left after one thread each for I/O and async
-/// tasks: on a machine with two cores one thread, so the springs step on both cores with
+/// the parts shrinking as the springs run out, so that the threads finish together. Bevy gives
+/// the compute pool the cores left after one thread each for I/O and async tasks: on a
+/// machine with two cores one thread, so the springs step on both cores with
 /// Bevy's defaults. On more cores, ask for a compute thread per core (the I/O and async threads
 /// mostly sleep) to step them on all of them:
 /// ```

@@ -266,11 +266,14 @@ impl AnchorLanes {
 pub(crate) struct TransitionTable {
     slots: Vec<Slot>,
     /// Each slot's increments `D = M − I` over this frame's time step, row-major, by the same
-    /// index (16 bytes: all the per-entity step reads), padded to a multiple of four.
+    /// index (16 bytes: all the per-entity step reads, unless it reads `paired`), padded to a
+    /// multiple of four.
     increments: Vec<Vec4>,
     /// Whether the table is for a vector that reads its increments in pairs
-    /// ([`SpringVector::PAIRED_INCREMENTS`]): then `paired` holds them so, by the same index.
+    /// ([`SpringVector::PAIRED_INCREMENTS`]).
     pairs: bool,
+    /// Where `pairs`: each slot's increments as [`paired_increments`] makes them (32 bytes, all
+    /// the step reads then), by the same index; empty otherwise.
     paired: Vec<[Vec4; 2]>,
     /// The anchors the slots' increments are extended from, four slots a lane each.
     lanes: Vec<AnchorLanes>,
@@ -414,11 +417,13 @@ const PREPARE_PARALLEL: usize = 4096;
 const PREPARE_GRAIN: usize = 64;
 
 /// The blocks of a [`TransitionTable`] (or a part of them) that its preparation writes: the
-/// anchor lanes, their clocks, and the increments and slots of their four slots each.
+/// anchor lanes, their clocks, and the increments (and their pairs, if the table keeps them)
+/// and slots of their four slots each.
 struct PrepareRows<'a> {
     lanes: &'a mut [AnchorLanes],
     clocks: &'a [[u8; 4]],
     increments: &'a mut [Vec4],
+    paired: &'a mut [[Vec4; 2]],
     slots: &'a [Slot],
 }
 
@@ -432,6 +437,7 @@ impl SplitRows for PrepareRows<'_> {
     fn take_front(&mut self, blocks: usize) -> Self {
         let blocks = blocks.min(self.len());
         let slots = (4 * blocks).min(self.slots.len());
+        let paired = (4 * blocks).min(self.paired.len());
         Self {
             lanes: self.lanes.split_off_mut(..blocks).unwrap_or_default(),
             clocks: self.clocks.split_off(..blocks).unwrap_or_default(),
@@ -439,6 +445,7 @@ impl SplitRows for PrepareRows<'_> {
                 .increments
                 .split_off_mut(..4 * blocks)
                 .unwrap_or_default(),
+            paired: self.paired.split_off_mut(..paired).unwrap_or_default(),
             slots: self.slots.split_off(..slots).unwrap_or_default(),
         }
     }
@@ -506,6 +513,11 @@ impl TransitionTable {
             for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
                 bound.include(lanes.prepare(increments, (&part.slots, block), steps_of(clocks)));
             }
+            // The pairs (none unless the table keeps them) from the part's increments, while
+            // they are in this thread's cache.
+            for (pairs, rows) in part.paired.iter_mut().zip(&*part.increments) {
+                *pairs = paired_increments(*rows);
+            }
             bound.value()
         };
         let threads = if self.slots.len() > PREPARE_PARALLEL {
@@ -513,20 +525,17 @@ impl TransitionTable {
         } else {
             1
         };
+        let pairs = if self.pairs { self.increments.len() } else { 0 };
+        self.paired.resize(pairs, [Vec4::ZERO; 2]);
         let rows = PrepareRows {
             lanes: &mut self.lanes,
             clocks: &self.lane_clocks,
             increments: &mut self.increments,
+            paired: &mut self.paired,
             slots: &self.slots,
         };
         let bound = split_over_threads(rows, (threads, PREPARE_GRAIN), prepare, (0.0, f32::max));
         self.step_limit = step_limit_for(bound);
-        if self.pairs {
-            self.paired.resize(self.increments.len(), [Vec4::ZERO; 2]);
-            for (pairs, rows) in self.paired.iter_mut().zip(&self.increments) {
-                *pairs = paired_increments(*rows);
-            }
-        }
     }
 
     /// The squared length up to which, for the offset `|y|²` and the velocity `|v|²` both,
@@ -544,8 +553,8 @@ impl TransitionTable {
     /// it: one subtraction and one bounds check find it.
     #[inline]
     pub(crate) fn increments(&self, ticket: u64) -> Option<Vec4> {
-        let index = usize::try_from(ticket.wrapping_sub(self.first)).ok()?;
-        self.increments.get(index).copied()
+        self.index_of(ticket)
+            .and_then(|index| self.increments.get(index).copied())
     }
 
     /// What the usual step reads of the table, copied out of it: a loop over springs keeps it
