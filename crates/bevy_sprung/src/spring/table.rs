@@ -50,6 +50,10 @@ struct Anchor {
     /// The largest `|δ|` the extension is accurate for (below `f32`'s rounding); negative for
     /// no anchor at all.
     reach: f32,
+    /// A bound on the sum of the absolute increments `|d₀₀| + |d₀₁| + |d₁₀| + |d₁₁|` that the
+    /// extension gives for any step within reach (see [`Anchor::bound`]): infinite if not
+    /// finite.
+    bound: f32,
 }
 
 /// `(ρ·δ)` up to which the degree-4 Taylor extension stays below `f32`'s unit roundoff: its
@@ -65,6 +69,7 @@ impl Anchor {
         omega_squared: 0.0,
         rate: 0.0,
         reach: -1.0,
+        bound: 0.0,
     };
 
     /// The anchor of `spring`'s `transition` over `dt`.
@@ -85,14 +90,47 @@ impl Anchor {
         let d2 = -rate * d1 - w2 * d0;
         let d3 = -rate * d2 - w2 * d1;
         let d4 = -rate * d3 - w2 * d2;
-        Self {
+        let mut anchor = Self {
             dt,
             f1: [d0, d1, d2 / 2.0, d3 / 6.0, d4 / 24.0],
             g0: transition.acceleration_gain(),
             omega_squared,
             rate,
             reach: reach.min(0.1 * dt),
-        }
+            bound: 0.0,
+        };
+        anchor.bound = anchor.bound();
+        anchor
+    }
+
+    /// A bound on `|d₀₀| + |d₀₁| + |d₁₀| + |d₁₁|` for the increments
+    /// [`AnchorLanes::increments`] gives at any `δ` within reach, made once here so that a
+    /// frame's preparation need not sum them (10 instructions per four slots).
+    ///
+    /// With `r` the reach, `F = Σ|cₙ|·rⁿ` bounds `|f1|` and `G = |g0| + Σ|cₙ|·rⁿ⁺¹/(n+1)` bounds
+    /// `|g0|` over the reach (each polynomial's terms taken at their largest), and the entries
+    /// `−ω²·g0`, `f1`, `−ω²·f1` and `−(ω²·g0 + 2b·f1)` sum to at most
+    /// `2ω²·G + (1 + ω² + 2b)·F`. It is computed in `f64` from the same `f32` coefficients and
+    /// enlarged by 10⁻⁵, far more than the `f32` evaluation's rounding (a few dozen `u`, with
+    /// every coefficient's magnitude counted) can add.
+    fn bound(&self) -> f32 {
+        let r = f64::from(self.reach.max(0.0));
+        let c = self.f1.map(|c| f64::from(c).abs());
+        let f = c[0] + r * (c[1] + r * (c[2] + r * (c[3] + r * c[4])));
+        let g = f64::from(self.g0).abs()
+            + r * (c[0] + r * (c[1] / 2.0 + r * (c[2] / 3.0 + r * (c[3] / 4.0 + r * c[4] / 5.0))));
+        let (w2, rate) = (
+            f64::from(self.omega_squared).abs(),
+            f64::from(self.rate).abs(),
+        );
+        let bound = (2.0 * w2 * g + (1.0 + w2 + rate) * f) * (1.0 + 1.0e-5);
+        #[expect(
+            clippy::cast_possible_truncation,
+            reason = "rounded to the nearest `f32`, within the 10⁻⁵ margin; above `f32`'s range \
+                      it becomes infinite"
+        )]
+        let bound = bound as f32;
+        if bound.is_nan() { f32::INFINITY } else { bound }
     }
 }
 
@@ -194,25 +232,24 @@ impl AnchorLanes {
     /// anchors are only read unless one is out of reach: a frame's preparation streams them
     /// and writes the increments, nothing else.
     ///
-    /// Returns each slot's sum of absolute increments, a lane each (see [`IncrementsBound`]).
+    /// Raises `bound` to the [`bound`](Anchor::bound)s of the anchors it makes (those of the
+    /// others were taken when they were made).
     #[inline]
     fn prepare(
         &mut self,
         increments: &mut [Vec4; 4],
         (slots, block): (&&[Slot], usize),
         dt: Vec4,
-    ) -> Vec4 {
+        bound: &mut f32,
+    ) {
         let (rows, within) = self.increments(dt);
         if within.all() {
             let by_lane = by_lane(rows);
             for (lane, increments) in increments.iter_mut().enumerate() {
                 *increments = by_lane.col(lane);
             }
-            let [d00, d01, d10, d11] = rows.map(Vec4::abs);
-            (d00 + d01) + (d10 + d11)
         } else {
-            self.prepare_lanes(increments, slots, block, dt);
-            Vec4::from_array(increments.map(|lane| lane.abs().element_sum()))
+            self.prepare_lanes(increments, (slots, block), dt, bound);
         }
     }
 
@@ -224,9 +261,9 @@ impl AnchorLanes {
     fn prepare_lanes(
         &mut self,
         increments: &mut [Vec4; 4],
-        slots: &[Slot],
-        block: usize,
+        (slots, block): (&[Slot], usize),
         dt: Vec4,
+        bound: &mut f32,
     ) {
         let slots = slots.get(4 * block..).unwrap_or_default();
         let (rows, within) = self.increments(dt);
@@ -239,7 +276,13 @@ impl AnchorLanes {
                 let transition = spring.transition(dt);
                 let [[d00, d01], [d10, d11]] = transition.increment_matrix();
                 *increments = Vec4::new(d00, d01, d10, d11);
-                self.set(lane, &Anchor::new(&spring, dt, &transition));
+                let anchor = Anchor::new(&spring, dt, &transition);
+                // The exact increments, which the extension at `δ = 0` matches to a few `u`,
+                // are within the anchor's bound too (or make it larger).
+                let exact = increments.abs().element_sum();
+                let exact = if exact.is_nan() { f32::INFINITY } else { exact };
+                *bound = bound.max(anchor.bound).max(exact);
+                self.set(lane, &anchor);
             }
         }
     }
@@ -294,6 +337,10 @@ pub(crate) struct TransitionTable {
     /// The squared length of offset and velocity up to which one step by any slot's increments
     /// stays far inside `f32` (see [`step_limit`](Self::step_limit)).
     step_limit: f32,
+    /// The largest [`bound`](Anchor::bound) of the anchors made since the lanes were last
+    /// cleared: every slot's increments, extended or exact, are within it (replaced anchors'
+    /// bounds stay in it, which only makes the limit more cautious).
+    anchor_bound: f32,
 }
 
 /// This frame's increments of a [`TransitionTable`]'s slots, by ticket, and its
@@ -373,39 +420,6 @@ const STEP_RESULT_BOUND: f32 = 85_070_591_730_234_615_865_843_651_857_942_052_86
 /// (0 for an infinite bound).
 fn step_limit_for(bound: f32) -> f32 {
     STEP_RESULT_BOUND / ((1.0 + bound) * (1.0 + bound))
-}
-
-/// The largest sum of a slot's absolute increments `|d₀₀| + |d₀₁| + |d₁₀| + |d₁₁|` among the
-/// slots it has seen (four lanes at a time): a bound on every row sum `|dᵢ₀| + |dᵢ₁|`.
-#[derive(Clone, Copy, Debug)]
-struct IncrementsBound {
-    largest: Vec4,
-    /// The lanes where a sum was NaN (a maximum would drop it).
-    nan: BVec4A,
-}
-
-impl IncrementsBound {
-    /// No slot seen.
-    const NONE: Self = Self {
-        largest: Vec4::ZERO,
-        nan: BVec4A::FALSE,
-    };
-
-    /// Takes in four slots' sums, a lane each.
-    #[inline]
-    fn include(&mut self, sums: Vec4) {
-        self.largest = self.largest.max(sums);
-        self.nan |= sums.is_nan_mask();
-    }
-
-    /// The bound: infinite if a sum was NaN.
-    fn value(self) -> f32 {
-        if self.nan.any() {
-            f32::INFINITY
-        } else {
-            self.largest.max_element()
-        }
-    }
 }
 
 /// Slots above which the preparation is split over threads: enough work to outweigh waking
@@ -504,21 +518,26 @@ impl TransitionTable {
     fn prepare_with(&mut self, steps_of: impl Fn(&[u8; 4]) -> Vec4 + Copy + Send + Sync) {
         // The steps copied into the closure: captured by reference, a slot cost 4 instructions
         // more (callgrind) where the closure was not inlined.
-        // Each part returns the largest bound of its blocks' increments.
+        // Each part returns the largest bound of the anchors it made.
         let prepare = move |part: PrepareRows| {
             let (increments, _) = part.increments.as_chunks_mut::<4>();
             let blocks = part.lanes.iter_mut().zip(part.clocks).zip(increments);
-            let mut bound = IncrementsBound::NONE;
+            let mut bound = 0.0_f32;
             // The slots by block index: only a lane that needs an exact transition reads one.
             for (block, ((lanes, clocks), increments)) in blocks.enumerate() {
-                bound.include(lanes.prepare(increments, (&part.slots, block), steps_of(clocks)));
+                lanes.prepare(
+                    increments,
+                    (&part.slots, block),
+                    steps_of(clocks),
+                    &mut bound,
+                );
             }
             // The pairs (none unless the table keeps them) from the part's increments, while
             // they are in this thread's cache.
             for (pairs, rows) in part.paired.iter_mut().zip(&*part.increments) {
                 *pairs = paired_increments(*rows);
             }
-            bound.value()
+            bound
         };
         let threads = if self.slots.len() > PREPARE_PARALLEL {
             scope_threads()
@@ -534,14 +553,17 @@ impl TransitionTable {
             paired: &mut self.paired,
             slots: &self.slots,
         };
-        let bound = split_over_threads(rows, (threads, PREPARE_GRAIN), prepare, (0.0, f32::max));
-        self.step_limit = step_limit_for(bound);
+        let made = split_over_threads(rows, (threads, PREPARE_GRAIN), prepare, (0.0, f32::max));
+        self.anchor_bound = self.anchor_bound.max(made);
+        self.step_limit = step_limit_for(self.anchor_bound);
     }
 
     /// The squared length up to which, for the offset `|y|²` and the velocity `|v|²` both,
     /// one step by any slot's prepared increments gives a result of squared length at most
-    /// `2¹²⁶`: finite, and far from overflowing, so the step needs no test of its result. 0
-    /// (only a state at zero is within it) before the first preparation and when an increment
+    /// `2¹²⁶`: finite, and far from overflowing, so the step needs no test of its result. It
+    /// is that of the anchors' bounds (see [`Anchor::bound`]), which hold for every step within
+    /// their reach, and of the increments computed exactly: a frame's preparation adds nothing
+    /// up. 0 (only a state at zero is within it) before the first preparation and when a bound
     /// is not finite.
     #[inline]
     #[must_use]
@@ -604,6 +626,7 @@ impl TransitionTable {
             self.increments.clear();
             self.paired.clear();
             self.lanes.clear();
+            self.anchor_bound = 0.0;
             self.lane_clocks.clear();
             self.index.clear();
             self.clocks = 0;
@@ -665,9 +688,7 @@ mod tests {
     use bevy::math::{Vec2, Vec3A, Vec4};
     use sprung::Spring;
 
-    use super::{
-        Anchor, AnchorLanes, IncrementsBound, STEP_RESULT_BOUND, TransitionTable, step_limit_for,
-    };
+    use super::{Anchor, AnchorLanes, STEP_RESULT_BOUND, TransitionTable, step_limit_for};
     use crate::clock::FrameSteps;
     use crate::space::paired_increments;
 
@@ -863,19 +884,18 @@ mod tests {
         table.prepare(FrameSteps::all(nearby));
         let worst = worst_prepared_error(&table, &springs, FrameSteps::all(nearby));
         assert!(worst < 8.0, "{worst} u");
-        let mut bound = IncrementsBound::NONE;
-        for (spring, clock) in &springs {
-            let slot = table.lookup(spring, *clock).unwrap();
-            let increments = table.increments(slot).unwrap();
-            bound.include(Vec4::splat(increments.abs().element_sum()));
-        }
-        let bound = bound.value();
-        let expected = step_limit_for(bound);
-        assert_eq!(
-            table.step_limit().to_bits(),
-            expected.to_bits(),
-            "bound {bound}"
-        );
+        // The limit is that of a bound on every slot's increments (the anchors' bounds, made
+        // when each was anchored), and not far above the largest.
+        let largest = springs
+            .iter()
+            .map(|(spring, clock)| {
+                let slot = table.lookup(spring, *clock).unwrap();
+                table.increments(slot).unwrap().abs().element_sum()
+            })
+            .fold(0.0, f32::max);
+        let limit = table.step_limit();
+        assert!(limit <= step_limit_for(largest), "largest {largest}");
+        assert!(limit >= step_limit_for(1.5 * largest), "largest {largest}");
     }
 
     /// A frame with the same steps as the last skips the table, yet slots added since (in a
@@ -1045,13 +1065,54 @@ mod tests {
         ordinary.finish(9);
         ordinary.prepare(FrameSteps::all(1.0 / 60.0));
         assert!(ordinary.step_limit() > 1.0e30, "{}", ordinary.step_limit());
-        // An increment that is not finite makes the bound infinite, and the limit 0.
-        let mut bound = IncrementsBound::NONE;
-        bound.include(Vec4::new(1.0, 4.0, 2.0, 0.0));
-        bound.include(Vec4::new(3.0, 0.0, 0.0, 0.0));
-        assert_eq!(bound.value().to_bits(), 4.0_f32.to_bits());
-        bound.include(Vec4::new(0.0, f32::NAN, 0.0, 0.0));
-        bound.include(Vec4::ONE);
-        assert_eq!(bound.value().to_bits(), f32::INFINITY.to_bits());
+        // An anchor whose bound is not finite (a coefficient NaN or infinite) makes it
+        // infinite, and the limit 0.
+        let spring = Spring::from_natural_frequency(8.0, 0.5).unwrap();
+        let anchor = Anchor::new(&spring, 1.0 / 60.0, &spring.transition(1.0 / 60.0));
+        assert!(anchor.bound.is_finite() && anchor.bound > 0.0);
+        for broken in [f32::NAN, f32::INFINITY] {
+            let mut anchor = anchor;
+            anchor.f1[3] = broken;
+            assert_eq!(anchor.bound().to_bits(), f32::INFINITY.to_bits());
+        }
+        assert_eq!(step_limit_for(f32::INFINITY).to_bits(), 0.0_f32.to_bits());
+    }
+
+    /// An anchor's bound holds for every step within its reach: over springs from nearly
+    /// undamped to heavily over-damped, slow to stiff, at frame rates from 30 to 360 fps, and
+    /// steps across the reach on both sides, the extended increments' absolute sum is within
+    /// it, and within a factor 1.5 of the largest of them (the limit stays useful).
+    #[test]
+    fn an_anchor_bounds_its_extensions() {
+        let mut loosest = 1.0_f32;
+        for omega in [0.1_f32, 1.0, 8.0, 40.0, 300.0, 2000.0, 1.0e5] {
+            for zeta in [0.02_f32, 0.3, 1.0, 1.0001, 4.0, 60.0] {
+                let spring = Spring::from_natural_frequency(omega, zeta).unwrap();
+                for fps in [30.0_f32, 60.0, 144.0, 360.0] {
+                    let dt = 1.0 / fps;
+                    let anchor = Anchor::new(&spring, dt, &spring.transition(dt));
+                    let mut largest = 0.0_f32;
+                    for fraction in [-1.0_f32, -0.99, -0.5, 0.0, 0.5, 0.99, 1.0] {
+                        for lane in 0..4 {
+                            let step = dt + fraction * anchor.reach;
+                            let Some(extended) = extend(&anchor, step, lane) else {
+                                continue;
+                            };
+                            let sum: f32 = extended.iter().map(|d| d.abs()).sum();
+                            assert!(
+                                sum <= anchor.bound,
+                                "{spring:?} {fps} fps: {sum} > {}",
+                                anchor.bound
+                            );
+                            largest = largest.max(sum);
+                        }
+                    }
+                    assert!(largest > 0.0, "{spring:?} {fps} fps");
+                    loosest = loosest.max(anchor.bound / largest);
+                }
+            }
+        }
+        println!("loosest anchor bound: {loosest} times the largest sum");
+        assert!(loosest < 1.5, "{loosest}");
     }
 }
