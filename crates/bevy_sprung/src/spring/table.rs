@@ -50,10 +50,6 @@ struct Anchor {
     /// The largest `|δ|` the extension is accurate for (below `f32`'s rounding); negative for
     /// no anchor at all.
     reach: f32,
-    /// A bound on the sum of the absolute increments `|d₀₀| + |d₀₁| + |d₁₀| + |d₁₁|` that the
-    /// extension gives for any step within reach (see [`Anchor::bound`]): infinite if not
-    /// finite.
-    bound: f32,
 }
 
 /// `(ρ·δ)` up to which the degree-4 Taylor extension stays below `f32`'s unit roundoff: its
@@ -69,7 +65,6 @@ impl Anchor {
         omega_squared: 0.0,
         rate: 0.0,
         reach: -1.0,
-        bound: 0.0,
     };
 
     /// The anchor of `spring`'s `transition` over `dt`.
@@ -90,22 +85,20 @@ impl Anchor {
         let d2 = -rate * d1 - w2 * d0;
         let d3 = -rate * d2 - w2 * d1;
         let d4 = -rate * d3 - w2 * d2;
-        let mut anchor = Self {
+        Self {
             dt,
             f1: [d0, d1, d2 / 2.0, d3 / 6.0, d4 / 24.0],
             g0: transition.acceleration_gain(),
             omega_squared,
             rate,
             reach: reach.min(0.1 * dt),
-            bound: 0.0,
-        };
-        anchor.bound = anchor.bound();
-        anchor
+        }
     }
 
     /// A bound on `|d₀₀| + |d₀₁| + |d₁₀| + |d₁₁|` for the increments
-    /// [`AnchorLanes::increments`] gives at any `δ` within reach, made once here so that a
-    /// frame's preparation need not sum them (10 instructions per four slots).
+    /// [`AnchorLanes::increments`] gives at any `δ` within reach (infinite if not finite),
+    /// made once when the anchor is so that a frame's preparation need not sum them (10
+    /// instructions per four slots).
     ///
     /// With `r` the reach, `F = Σ|cₙ|·rⁿ` bounds `|f1|` and `G = |g0| + Σ|cₙ|·rⁿ⁺¹/(n+1)` bounds
     /// `|g0|` over the reach (each polynomial's terms taken at their largest), and the entries
@@ -281,7 +274,7 @@ impl AnchorLanes {
                 // are within the anchor's bound too (or make it larger).
                 let exact = increments.abs().element_sum();
                 let exact = if exact.is_nan() { f32::INFINITY } else { exact };
-                *bound = bound.max(anchor.bound).max(exact);
+                *bound = bound.max(anchor.bound()).max(exact);
                 self.set(lane, &anchor);
             }
         }
@@ -1069,7 +1062,7 @@ mod tests {
         // infinite, and the limit 0.
         let spring = Spring::from_natural_frequency(8.0, 0.5).unwrap();
         let anchor = Anchor::new(&spring, 1.0 / 60.0, &spring.transition(1.0 / 60.0));
-        assert!(anchor.bound.is_finite() && anchor.bound > 0.0);
+        assert!(anchor.bound().is_finite() && anchor.bound() > 0.0);
         for broken in [f32::NAN, f32::INFINITY] {
             let mut anchor = anchor;
             anchor.f1[3] = broken;
@@ -1091,6 +1084,7 @@ mod tests {
                 for fps in [30.0_f32, 60.0, 144.0, 360.0] {
                     let dt = 1.0 / fps;
                     let anchor = Anchor::new(&spring, dt, &spring.transition(dt));
+                    let bound = anchor.bound();
                     let mut largest = 0.0_f32;
                     for fraction in [-1.0_f32, -0.99, -0.5, 0.0, 0.5, 0.99, 1.0] {
                         for lane in 0..4 {
@@ -1099,16 +1093,12 @@ mod tests {
                                 continue;
                             };
                             let sum: f32 = extended.iter().map(|d| d.abs()).sum();
-                            assert!(
-                                sum <= anchor.bound,
-                                "{spring:?} {fps} fps: {sum} > {}",
-                                anchor.bound
-                            );
+                            assert!(sum <= bound, "{spring:?} {fps} fps: {sum} > {bound}");
                             largest = largest.max(sum);
                         }
                     }
                     assert!(largest > 0.0, "{spring:?} {fps} fps");
-                    loosest = loosest.max(anchor.bound / largest);
+                    loosest = loosest.max(bound / largest);
                 }
             }
         }
