@@ -309,14 +309,12 @@ glam_vector!(Vec2, {
         (0b0100_1100_0000_0000_u32 >> within) & 1 != 0
     }
 
-    /// Both at once, in one four-lane vector `[offset, velocity]`: `[d00, d00, d11, d11]`
-    /// times it plus `[d01, d01, d10, d10]` times its halves swapped, the same products and
-    /// sums as two `Vec2`s', in a third of the instructions.
+    /// Both at once, in one four-lane vector `[offset, velocity]`: the
+    /// [`paired`](paired_increments) step, the same products and sums as two `Vec2`s', in a
+    /// third of the instructions.
     #[inline]
     fn step_increments(offset: Vec2, velocity: Vec2, increments: Vec4) -> (Vec2, Vec2) {
-        let state = offset.extend(velocity.x).extend(velocity.y);
-        let sums = increments.xxww() * state + increments.yyzz() * state.zwxy();
-        (sums.xy(), sums.zw())
+        Self::step_paired_increments(offset, velocity, paired_increments(increments))
     }
 
     const PAIRED_INCREMENTS: bool = true;
