@@ -459,13 +459,16 @@ impl SplitRows for PrepareRows<'_> {
 }
 
 impl TransitionTable {
-    /// A ticket no slot ever has: what a spring without a slot remembers.
-    pub(crate) const NO_TICKET: u64 = u64::MAX;
+    /// The first of the tickets no slot ever has (the table hands out tickets from 0, one a
+    /// slot, and could not reach it in the life of any program): a spring without a slot
+    /// remembers one of them.
+    pub(crate) const NO_TICKET: u64 = 0xFFFF_FFFF_0000_0000;
 
     /// The index of the slot with `ticket`, if the table has it.
     #[inline]
     fn index_of(&self, ticket: u64) -> Option<usize> {
-        // A ticket from before a clearing wraps far past the end (as does `NO_TICKET`).
+        // A ticket from before a clearing wraps far past the end (as do those from `NO_TICKET`
+        // up).
         usize::try_from(ticket.wrapping_sub(self.first))
             .ok()
             .filter(|&index| index < self.slots.len())

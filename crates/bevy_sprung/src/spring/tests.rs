@@ -332,11 +332,54 @@ fn a_translation_spring_streams_80_bytes() {
     assert!(configuration <= 64, "configuration: {configuration} bytes");
 }
 
-/// A `Vec2` spring's motion is packed: no padding after its 4-byte fields (the ticket is kept
-/// in 4-byte halves), 52 bytes where an 8-byte-aligned ticket made it 56.
+/// A `Vec2` spring's motion is packed into a multiple of 16 bytes (in a column that starts
+/// 16-byte aligned, as the allocator's do, its 16-byte state load then never straddles two
+/// cache lines): the ticket is kept in 4-byte halves (8-byte aligned, it padded the motion to
+/// 56), and holds the time pending (in a field of its own, the motion was 52 bytes).
 #[cfg(feature = "ui")]
 #[test]
-fn a_ui_scale_spring_streams_52_bytes() {
+fn a_ui_scale_spring_streams_48_bytes() {
     let motion = size_of::<SpringMotion<crate::ui::UiTransformScale>>();
-    assert!(motion <= 52, "motion: {motion} bytes");
+    assert!(
+        motion <= 48 && motion.is_multiple_of(16),
+        "motion: {motion} bytes"
+    );
+}
+
+/// The slot ticket and the time pending share a field: each reads back what was set, a spring
+/// with time pending has a ticket no slot has, and forgetting the slot keeps the time.
+#[test]
+fn the_time_pending_and_the_slot_ticket_share_a_field() {
+    let mut motion = SpringMotion::<crate::transform::Translation>::default();
+    assert_eq!(motion.pending().to_bits(), 0);
+    assert!(motion.ticket() >= TransitionTable::NO_TICKET);
+    for ticket in [
+        0,
+        5,
+        u64::from(u32::MAX) + 1,
+        TransitionTable::NO_TICKET - 1,
+    ] {
+        motion.set_ticket(ticket);
+        assert_eq!((motion.ticket(), motion.pending().to_bits()), (ticket, 0));
+        motion.clear_ticket();
+        assert!(motion.ticket() >= TransitionTable::NO_TICKET);
+        assert_eq!(motion.pending().to_bits(), 0);
+    }
+    for seconds in [
+        f32::MIN_POSITIVE,
+        1.0e-6,
+        0.25,
+        1.0e6,
+        f32::MAX,
+        f32::INFINITY,
+    ] {
+        motion.set_ticket(7);
+        motion.set_pending(seconds);
+        assert!(motion.ticket() >= TransitionTable::NO_TICKET, "{seconds}");
+        assert_eq!(motion.pending().to_bits(), seconds.to_bits());
+        motion.clear_ticket();
+        assert_eq!(motion.pending().to_bits(), seconds.to_bits());
+        motion.set_pending(0.0);
+        assert_eq!(motion.pending().to_bits(), 0);
+    }
 }

@@ -281,7 +281,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         }
         let dt = steps.dt(config.clock);
         let frame = self.step_general(config, current, dt, hidden, (table, cache));
-        self.set_ticket(TransitionTable::NO_TICKET);
+        self.clear_ticket();
         frame
     }
 
@@ -299,13 +299,13 @@ impl<P: SpringProperty> SpringMotion<P> {
         (table, cache): (&TransitionTable, &mut TransitionCache),
     ) -> Frame<ValueOf<P>> {
         let dt = steps.dt(config.clock);
-        self.set_ticket(TransitionTable::NO_TICKET);
+        self.clear_ticket();
         if preference == ReducedMotion::Snap {
             self.repair(config, current, table);
             let target = config.target;
             self.active_target = target;
             self.offset = Carried::new(OffsetOf::<P>::ZERO);
-            self.pending = 0.0;
+            self.set_pending(0.0);
             self.rest_squared = super::rest_squared::<P>(config.rest, target);
             self.velocity = OffsetOf::<P>::ZERO;
             let outcome = if config.target_rate() == OffsetOf::<P>::ZERO {
@@ -354,7 +354,7 @@ impl<P: SpringProperty> SpringMotion<P> {
     ) -> Option<u64> {
         let usual = !hidden
             & (dt > 0.0)
-            & (self.pending == 0.0)
+            & (self.pending() == 0.0)
             & (config.target == self.active_target)
             & (config.target_rate() == OffsetOf::<P>::ZERO)
             & !config.velocity_change.is_pending();
@@ -391,7 +391,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         let target = config.target;
         let retargeted = target != self.active_target;
         if hidden && !retargeted {
-            self.pending += dt;
+            self.set_pending(self.pending() + dt);
             return Frame {
                 outcome: Stepped::Deferred,
                 write: None,
@@ -414,8 +414,9 @@ impl<P: SpringProperty> SpringMotion<P> {
         }
         let mut velocity = self.velocity;
         // Catch up the hidden time under the target that was in effect, then retarget.
-        if self.pending > 0.0 {
-            let pending = core::mem::take(&mut self.pending);
+        let pending = self.pending();
+        if pending > 0.0 {
+            self.set_pending(0.0);
             (offset, velocity) = Self::advance(config, cache, active, (offset, velocity), pending);
         }
         if retargeted {
