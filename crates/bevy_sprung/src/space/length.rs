@@ -18,14 +18,22 @@ fn number(value: Val) -> f32 {
 /// `number` in the unit of `unit` (pixels where `unit` is `Auto`).
 #[inline]
 fn in_unit_of(unit: Val, number: f32) -> Val {
-    match unit {
-        Val::Px(_) | Val::Auto => Val::Px(number),
-        Val::Percent(_) => Val::Percent(number),
-        Val::Vw(_) => Val::Vw(number),
-        Val::Vh(_) => Val::Vh(number),
-        Val::VMin(_) => Val::VMin(number),
-        Val::VMax(_) => Val::VMax(number),
+    let mut value = unit;
+    match &mut value {
+        Val::Px(n) | Val::Percent(n) | Val::Vw(n) | Val::Vh(n) | Val::VMin(n) | Val::VMax(n) => {
+            *n = number;
+        }
+        Val::Auto => return Val::Px(number),
     }
+    value
+}
+
+/// Whether two pairs of lengths are in the same units, axis by axis (`Auto` is its own): with
+/// equal numbers, they are `==`.
+#[inline]
+fn same_units(a: Val2, b: Val2) -> bool {
+    use core::mem::discriminant;
+    (discriminant(&a.x) == discriminant(&b.x)) & (discriminant(&a.y) == discriminant(&b.y))
 }
 
 /// Whether `value` can be read in `target`'s unit: the same unit, or `Auto` (read as 0).
@@ -188,6 +196,26 @@ impl SpringSpace for Length2 {
         )
     }
 
+    /// `==`, which needs equal numbers (`Val` counts zeros of any two units equal, and `Auto`
+    /// as 0 only to itself): tested first, as one vector, so that values that differ (a
+    /// moving spring's) are told apart without `==`'s branches on the units.
+    #[inline]
+    fn same(a: Val2, b: Val2) -> bool {
+        Self::coordinates(a) == Self::coordinates(b) && a == b
+    }
+
+    /// `==` of `current` and [`at_carried`](SpringSpace::at_carried)'s value, the usual case
+    /// (the units are the target's, pixels for `Auto`, and the numbers the carried sums, added
+    /// as one vector in the same order) told without building the value; the rest (another
+    /// unit, or numbers that differ, which `==` may still count equal at zero) by `==`.
+    #[inline]
+    fn is_written(current: Val2, target: Val2, offset: Carried<Vec2>) -> bool {
+        let units = Val2::new(in_unit_of(target.x, 0.0), in_unit_of(target.y, 0.0));
+        let numbers = (Self::coordinates(target) + offset.offset) + offset.remainder;
+        (same_units(current, units) & (Self::coordinates(current) == numbers))
+            || current == Self::at_carried(target, offset)
+    }
+
     #[inline]
     fn retarget(
         old_target: Val2,
@@ -227,5 +255,86 @@ impl AffineSpace for Length2 {
     #[inline]
     fn coordinates(value: Val2) -> Vec2 {
         Vec2::new(number(value.x), number(value.y))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use bevy::math::Vec2;
+    use bevy::ui::{Val, Val2};
+
+    use super::{Carried, Length2, SpringSpace};
+
+    /// Lengths in every unit and `Auto`, with numbers at the edges: zeros of both signs, a
+    /// subnormal, the largest, an infinity and NaN.
+    fn lengths() -> Vec<Val> {
+        let numbers = [
+            0.0,
+            -0.0,
+            1.5,
+            -700.25,
+            1.0e-40,
+            f32::MAX,
+            f32::INFINITY,
+            f32::NAN,
+        ];
+        let mut all = vec![Val::Auto];
+        for n in numbers {
+            all.extend([
+                Val::Px(n),
+                Val::Percent(n),
+                Val::Vw(n),
+                Val::Vh(n),
+                Val::VMin(n),
+                Val::VMax(n),
+            ]);
+        }
+        all
+    }
+
+    /// `Length2`'s `same` and `is_written`, which compare units and numbers apart, decide as
+    /// `==` of the values does, on every pair of edge lengths in one axis (and a few in the
+    /// other), toward every target, from carried offsets with and without a remainder.
+    #[test]
+    fn the_pair_tests_decide_as_the_values_compare() {
+        let lengths = lengths();
+        let others = [
+            Val::Auto,
+            Val::Px(3.0),
+            Val::Percent(3.0),
+            Val::Px(f32::NAN),
+            Val::Percent(0.0),
+            Val::Vw(-0.0),
+        ];
+        let offsets = [
+            Carried::new(Vec2::ZERO),
+            Carried {
+                offset: Vec2::new(2.5, -0.75),
+                remainder: Vec2::new(1.0e-7, -2.0e-8),
+            },
+            Carried::new(Vec2::new(-1.5, 700.25)),
+        ];
+        let mut checked = 0;
+        for &ax in &lengths {
+            for &bx in &lengths {
+                for &ay in &others {
+                    for &by in &others {
+                        let (a, b) = (Val2::new(ax, ay), Val2::new(bx, by));
+                        assert_eq!(Length2::same(a, b), a == b, "{a:?} {b:?}");
+                        for offset in offsets {
+                            let written = Length2::at_carried(b, offset) == a;
+                            assert_eq!(
+                                Length2::is_written(a, b, offset),
+                                written,
+                                "{a:?} toward {b:?} at {offset:?}"
+                            );
+                            checked += usize::from(written);
+                        }
+                    }
+                }
+            }
+        }
+        // Written values among them, not only refusals.
+        assert!(checked > 100, "{checked}");
     }
 }
