@@ -231,9 +231,10 @@ pub struct SpringMotion<P: SpringProperty> {
 /// A spring's slot ticket or, where it has no slot, its time pending: a spring with time
 /// pending has none (its next visible step is the general one, which catches up), so one field
 /// holds either. That keeps the motion of a `Vec2` spring to 48 bytes, a multiple of 16, in
-/// which none of the usual step's loads straddles two cache lines; at 52 bytes, with the time
-/// in a field of its own, a `UiScaleSpring` stepped 8% slower, a `UiTransformTranslation`
-/// spring 11% (same instructions; fastest frames, 100 000 springs).
+/// which only the state load of one motion in four straddles two cache lines (about one of
+/// the usual step's 16-byte accesses in five did at 52 bytes); with the time in a field of its
+/// own, a `UiScaleSpring` stepped 7–8% slower, a `UiTransformTranslation` spring (60 bytes
+/// then, 56 now) 6–7% (same instructions; fastest frames, 100 000 springs).
 ///
 /// Two `u32` halves, aligned to 4 bytes (not padding a `Vec2` or `f32` spring's motion to 8),
 /// read as one 8-byte load: a slot's ticket, or with the high half all ones (tickets from

@@ -333,8 +333,8 @@ fn a_translation_spring_streams_80_bytes() {
 }
 
 /// A `Vec2` spring's motion is packed into a multiple of 16 bytes (in a column that starts
-/// 16-byte aligned, as the allocator's do, its 16-byte state load then never straddles two
-/// cache lines): the ticket is kept in 4-byte halves (8-byte aligned, it padded the motion to
+/// 16-byte aligned, as the allocator's do, its 16-byte state load then straddles two cache
+/// lines in one motion of four, and its other accesses never): the ticket is kept in 4-byte halves (8-byte aligned, it padded the motion to
 /// 56), and holds the time pending (in a field of its own, the motion was 52 bytes).
 #[cfg(feature = "ui")]
 #[test]
