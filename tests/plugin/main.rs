@@ -14,6 +14,7 @@ mod bad_input;
 mod catch_up;
 mod choreography;
 mod clocks;
+mod disabling;
 mod follow;
 mod interaction;
 mod juice;

@@ -737,6 +737,8 @@ where
 
 /// Present while the spring on property `P` of this entity rests; the plugin adds and removes
 /// it. Resting springs are not iterated, so a scene of sleeping springs costs almost nothing.
+/// Removed (by the plugin, or by hand, as from an entity disabled meanwhile), it marks the
+/// spring's configuration changed: what changed while the spring was not stepped is taken up.
 #[derive(Component, Reflect)]
 #[reflect(Component, Default, Debug)]
 pub struct SpringAsleep<P: SpringProperty>(#[reflect(ignore)] PhantomData<fn() -> P>);

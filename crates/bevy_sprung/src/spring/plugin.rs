@@ -4,6 +4,8 @@ use core::any::TypeId;
 use core::marker::PhantomData;
 
 use bevy::app::AnimationSystems;
+use bevy::ecs::component::ComponentId;
+use bevy::ecs::entity_disabling::DefaultQueryFilters;
 use bevy::ecs::intern::Interned;
 use bevy::ecs::lifecycle::HookContext;
 use bevy::ecs::schedule::{ScheduleLabel, Schedules, SingleThreadedExecutor, SystemSet};
@@ -121,6 +123,8 @@ pub(crate) struct SpringSchedule {
     last_property: Option<Interned<dyn SystemSet>>,
     /// The properties already added (adding one twice is harmless).
     registered: Vec<TypeId>,
+    /// The components (and their properties) whose removal [`touch_on_return`] observes.
+    returns_observed: Vec<(TypeId, ComponentId)>,
     /// Systems that wait for the first component of any of their types.
     waiting: Vec<(Vec<TypeId>, Interned<dyn ScheduleLabel>, AddSystems)>,
     /// Systems whose component has been added, to add to their schedule: at once, or, if that
@@ -328,6 +332,7 @@ impl Plugin for SpringSchedulePlugin {
             label: self.schedule,
             last_property: None,
             registered: Vec::new(),
+            returns_observed: Vec::new(),
             waiting: Vec::new(),
             ready: Vec::new(),
             in_use: Vec::new(),
@@ -403,6 +408,8 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
         let previous = bookkeeping
             .last_property
             .replace(PropertySystems::<P>::default().intern());
+        // Here, not only in `finish`: an app updated without being run is not finished.
+        observe_returns::<P>(app.world_mut());
         app.register_type::<PropertySpring<P>>()
             .register_type::<SpringMotion<P>>()
             .register_type::<SpringAsleep<P>>()
@@ -436,8 +443,54 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
         }
     }
 
+    /// Observes the springs' returns ([`touch_on_return`]) from disabling components that
+    /// plugins added since this one registered.
+    fn finish(&self, app: &mut App) {
+        observe_returns::<P>(app.world_mut());
+    }
+
     fn is_unique(&self) -> bool {
         false
+    }
+}
+
+/// Observes the removal of the components that take a spring on `P` out of the systems' sight
+/// and are not observed yet: [`touch_on_return`].
+fn observe_returns<P: SpringProperty>(world: &mut World) {
+    let property = TypeId::of::<P>();
+    let asleep = world.register_component::<SpringAsleep<P>>();
+    let disabling = world
+        .get_resource::<DefaultQueryFilters>()
+        .map(|filters| filters.disabling_ids().collect::<Vec<_>>())
+        .unwrap_or_default();
+    let mut bookkeeping = world.resource_mut::<SpringSchedule>();
+    let new: Vec<ComponentId> = core::iter::once(asleep)
+        .chain(disabling)
+        .filter(|&id| !bookkeeping.returns_observed.contains(&(property, id)))
+        .collect();
+    if new.is_empty() {
+        return;
+    }
+    bookkeeping
+        .returns_observed
+        .extend(new.iter().map(|&id| (property, id)));
+    world.spawn((
+        Observer::new(touch_on_return::<P>).with_components(new),
+        Name::new(format!("bevy_sprung returns of {}", P::short_type_path())),
+    ));
+}
+
+/// A spring on `P` back among those the stepping system steps, its entity enabled again (a
+/// disabling component, Bevy's `Disabled` or one registered as such before the app finishes
+/// its plugins, removed) or its [`SpringAsleep<P>`] removed: its configuration is marked changed.
+///
+/// The systems run without the springs they do not see, so "changed since the system's last
+/// run", which their change ticks tell them, is "changed since the spring's last step" only
+/// for springs they saw in that run. Marked, a returning spring is read afresh: a target set
+/// meanwhile wakes it or is headed for, a value written meanwhile is sprung on from.
+fn touch_on_return<P: SpringProperty>(returning: On<Remove>, mut world: DeferredWorld) {
+    if let Some(mut spring) = world.get_mut::<PropertySpring<P>>(returning.entity) {
+        spring.set_changed();
     }
 }
 

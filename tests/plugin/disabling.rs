@@ -1,0 +1,136 @@
+//! Springs of entities disabled for a while (Bevy's `Disabled`, which hides them from every
+//! query, the stepping system's too) take up what changed meanwhile when they are enabled: the
+//! stepping system ran without them, so "changed since its last run" is not "changed since the
+//! spring's last step".
+
+use bevy::ecs::entity_disabling::Disabled;
+use bevy::prelude::*;
+use bevy_sprung::prelude::*;
+
+use crate::harness::{app, asleep, motion, run, spawn_translation, translation};
+
+/// Many springs in one table, so that the one disabled and enabled again shares its blocks
+/// of rows with springs that were stepped all along (and the systems run while it is
+/// disabled: they run only where there are springs); the middle one, after `frames`.
+fn springs(app: &mut App, spring: Spring, target: Vec3, frames: u32) -> Entity {
+    let springs: Vec<Entity> = (0..1000_u16)
+        .map(|i| spawn_translation(app, spring, Vec3::X * f32::from(i), target))
+        .collect();
+    run(app, frames);
+    springs[500]
+}
+
+/// A spring retargeted while disabled heads for the new target from its first frame enabled
+/// (the exact step toward it from the state it had), and arrives.
+#[test]
+fn a_target_set_while_disabled_is_headed_for() {
+    let mut app = app(60);
+    let spring = Spring::from_natural_frequency(10.0, 0.6).unwrap();
+    let entity = springs(&mut app, spring, Vec3::new(3.0, 2.0, 4.0), 10);
+    let (at, velocity) = (
+        translation(&app, entity),
+        motion::<Translation>(&app, entity).velocity(),
+    );
+    assert!(velocity.length() > 1.0, "still moving: {velocity}");
+    app.world_mut().entity_mut(entity).insert(Disabled);
+    run(&mut app, 2);
+    let new_target = Vec3::new(-50.0, 7.0, 1.0);
+    app.world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap()
+        .set_target(new_target);
+    run(&mut app, 2);
+    app.world_mut().entity_mut(entity).remove::<Disabled>();
+    app.update();
+    let expected = spring
+        .transition(1.0 / 60.0)
+        .step(sprung::SpringState::new(at, velocity), new_target)
+        .position;
+    let moved = translation(&app, entity);
+    assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+    run(&mut app, 600);
+    assert_eq!(translation(&app, entity), new_target);
+    assert!(asleep::<Translation>(&app, entity));
+}
+
+/// A value written while the spring's entity was disabled is sprung on from where it was
+/// put, with the velocity the spring had: the first frame after enabling is the exact step
+/// from there.
+#[test]
+fn a_value_written_while_disabled_is_sprung_on_from_where_it_was_put() {
+    let mut app = app(60);
+    let spring = Spring::from_natural_frequency(10.0, 0.6).unwrap();
+    let target = Vec3::new(3.0, 2.0, 4.0);
+    let entity = springs(&mut app, spring, target, 10);
+    let velocity = motion::<Translation>(&app, entity).velocity();
+    assert!(velocity.length() > 1.0, "still moving: {velocity}");
+    app.world_mut().entity_mut(entity).insert(Disabled);
+    run(&mut app, 2);
+    let put = Vec3::new(2.5, 0.5, 1.5);
+    app.world_mut()
+        .get_mut::<Transform>(entity)
+        .unwrap()
+        .translation = put;
+    run(&mut app, 2);
+    app.world_mut().entity_mut(entity).remove::<Disabled>();
+    app.update();
+    let expected = spring
+        .transition(1.0 / 60.0)
+        .step(sprung::SpringState::new(put, velocity), target)
+        .position;
+    let moved = translation(&app, entity);
+    assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+}
+
+/// A spring asleep when its entity was disabled, retargeted meanwhile, wakes once enabled and
+/// arrives.
+#[test]
+fn a_sleeping_spring_retargeted_while_disabled_wakes() {
+    let mut app = app(60);
+    let entity = springs(&mut app, Spring::snappy(), Vec3::ONE, 600);
+    assert!(asleep::<Translation>(&app, entity));
+    app.world_mut().entity_mut(entity).insert(Disabled);
+    run(&mut app, 2);
+    let new_target = Vec3::new(-5.0, 7.0, 1.0);
+    app.world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap()
+        .set_target(new_target);
+    run(&mut app, 2);
+    app.world_mut().entity_mut(entity).remove::<Disabled>();
+    run(&mut app, 600);
+    assert_eq!(translation(&app, entity), new_target);
+}
+
+/// A moving spring put to sleep by hand (its `SpringAsleep` inserted, as a scene could), its
+/// value written meanwhile, and woken by hand (the component removed): it is sprung on from
+/// where the value was put, with the velocity it had.
+#[test]
+fn a_spring_put_to_sleep_by_hand_takes_up_what_was_written_meanwhile() {
+    let mut app = app(60);
+    let spring = Spring::from_natural_frequency(10.0, 0.6).unwrap();
+    let target = Vec3::new(3.0, 2.0, 4.0);
+    let entity = springs(&mut app, spring, target, 10);
+    let velocity = motion::<Translation>(&app, entity).velocity();
+    app.world_mut()
+        .entity_mut(entity)
+        .insert(SpringAsleep::<Translation>::default());
+    run(&mut app, 2);
+    let put = Vec3::new(2.5, 0.5, 1.5);
+    app.world_mut()
+        .get_mut::<Transform>(entity)
+        .unwrap()
+        .translation = put;
+    run(&mut app, 2);
+    assert_eq!(translation(&app, entity), put, "asleep, it does not move");
+    app.world_mut()
+        .entity_mut(entity)
+        .remove::<SpringAsleep<Translation>>();
+    app.update();
+    let expected = spring
+        .transition(1.0 / 60.0)
+        .step(sprung::SpringState::new(put, velocity), target)
+        .position;
+    let moved = translation(&app, entity);
+    assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+}
