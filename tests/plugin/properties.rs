@@ -4,7 +4,7 @@ use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 use bevy_sprung::space::rotation_vector;
 
-use crate::harness::{app, asleep, motion, run};
+use crate::harness::{app, asleep, motion, run, spawn_translation, translation};
 
 /// A component of the user's own, with a scalar field.
 #[derive(Component, Default)]
@@ -325,5 +325,100 @@ fn a_value_written_mid_flight_is_sprung_on_from_where_it_was_put() {
     ];
     for (moved, expected) in moved {
         assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+    }
+}
+
+/// Among a thousand springs of one table (in blocks of rows whose change ticks are tested
+/// together), a value written mid-flight into one is sprung on from where it was put, and the
+/// springs beside it move exactly as in an app where nothing was written.
+#[test]
+fn a_value_written_among_many_springs_moves_that_one_alone() {
+    let spring = Spring::from_natural_frequency(10.0, 0.6).unwrap();
+    let target = Vec3::new(3.0, 2.0, 4.0);
+    let spawn = |app: &mut App| -> Vec<Entity> {
+        (0..1000_u16)
+            .map(|i| spawn_translation(app, spring, Vec3::X * f32::from(i), target))
+            .collect()
+    };
+    let (mut written, mut untouched) = (app(60), app(60));
+    let (springs, twins) = (spawn(&mut written), spawn(&mut untouched));
+    run(&mut written, 6);
+    run(&mut untouched, 6);
+    let one = springs[300];
+    let velocity = motion::<Translation>(&written, one).velocity();
+    let put = Vec3::new(2.5, 0.5, 1.5);
+    written
+        .world_mut()
+        .get_mut::<Transform>(one)
+        .unwrap()
+        .translation = put;
+    for frame in 0..3 {
+        written.update();
+        untouched.update();
+        if frame == 0 {
+            let expected = spring
+                .transition(1.0 / 60.0)
+                .step(sprung::SpringState::new(put, velocity), target)
+                .position;
+            let moved = translation(&written, one);
+            assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+        }
+        for (row, (&spring, &twin)) in springs.iter().zip(&twins).enumerate() {
+            if spring != one {
+                assert_eq!(
+                    translation(&written, spring),
+                    translation(&untouched, twin),
+                    "row {row}, frame {frame}"
+                );
+            }
+        }
+    }
+}
+
+/// Springs on two fields of one component (a translation and a scale on a `Transform`: to
+/// each, the other's write is a write of the component by something else) move exactly as
+/// each alone, frame by frame in tables of hundreds, and settle.
+#[test]
+fn springs_on_two_fields_of_one_component_move_as_each_alone() {
+    let mut app = app(60);
+    let spring = Spring::wobbly();
+    let scale_target = Vec3::new(2.0, 0.5, 3.0);
+    let rows: Vec<(Entity, Entity, Entity)> = (0..300_u16)
+        .map(|i| {
+            let from = Transform::from_translation(Vec3::splat(f32::from(i)));
+            let world = app.world_mut();
+            let both = world
+                .spawn((
+                    from,
+                    TranslationSpring::new(spring, Vec3::ZERO),
+                    ScaleSpring::new(spring, scale_target),
+                ))
+                .id();
+            let translated = world
+                .spawn((from, TranslationSpring::new(spring, Vec3::ZERO)))
+                .id();
+            let scaled = world
+                .spawn((from, ScaleSpring::new(spring, scale_target)))
+                .id();
+            (both, translated, scaled)
+        })
+        .collect();
+    let transform = |app: &App, entity: Entity| *app.world().get::<Transform>(entity).unwrap();
+    for frame in 0..600 {
+        app.update();
+        for &(both, translated, scaled) in &rows {
+            let both = transform(&app, both);
+            assert_eq!(
+                both.translation,
+                transform(&app, translated).translation,
+                "frame {frame}"
+            );
+            assert_eq!(both.scale, transform(&app, scaled).scale, "frame {frame}");
+        }
+    }
+    for &(both, _, _) in &rows {
+        assert_eq!(transform(&app, both).translation, Vec3::ZERO);
+        assert_eq!(transform(&app, both).scale, scale_target);
+        assert!(asleep::<Translation>(&app, both) && asleep::<Scale>(&app, both));
     }
 }

@@ -37,10 +37,13 @@ use crate::space::{Carried, SpringSpace, SpringVector};
 /// [`SpringMotion<P>`] beside it. The plugin steps the motion every frame and reads this
 /// component only in frames where something changed it.
 ///
-/// It starts from wherever the property is, and reads it every frame: something else may move
-/// the property (a teleport, a drag) and the spring goes on from there. Between its own writes
-/// it keeps the digits of the offset that the property cannot hold, so it arrives at any
-/// magnitude and frame rate instead of stopping a rounding short.
+/// It starts from wherever the property is, and follows what else writes it: something else may
+/// move the property (a teleport, a drag) and the spring goes on from there. A write is seen
+/// through Bevy's change detection (any write through `Mut`, as queries and `World::get_mut`
+/// give): one made with `bypass_change_detection` may not be, and the spring then writes its
+/// own value over it. Between its own writes it keeps the digits of the offset that the
+/// property cannot hold, so it arrives at any magnitude and frame rate instead of stopping a
+/// rounding short.
 ///
 /// The common path cannot fail: [`set_target`](Self::set_target) and the other setters take any
 /// finite value. A NaN or infinite target, velocity or impulse is refused with one warning and
