@@ -443,8 +443,9 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
         }
     }
 
-    /// Observes the springs' returns ([`touch_on_return`]) from disabling components that
-    /// plugins added since this one registered.
+    /// Marks a spring changed when its entity is enabled again, also for the disabling
+    /// components that plugins registered after this one was added (see
+    /// [`SpringAsleep`](crate::spring::SpringAsleep), whose removal does the same).
     fn finish(&self, app: &mut App) {
         observe_returns::<P>(app.world_mut());
     }
