@@ -372,7 +372,7 @@ fn step_rows<P: SpringProperty>(
     }
 }
 
-/// Rows whose configurations' change ticks [`step_rows`] tests together.
+/// Rows whose configurations' and properties' change ticks [`step_rows`] tests together.
 const TOUCH_BLOCK: usize = 256;
 
 /// [`step_rows`] for one block of rows, whether each is `untouched` (see [`step_row`]) told by
