@@ -7,17 +7,31 @@ use bevy::ecs::entity_disabling::Disabled;
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 
-use crate::harness::{app, asleep, motion, run, spawn_translation, translation};
+use crate::harness::{
+    app, asleep, assert_stepped_from, many_translations, motion, run, translation,
+};
 
 /// Many springs in one table, so that the one disabled and enabled again shares its blocks
 /// of rows with springs that were stepped all along (and the systems run while it is
 /// disabled: they run only where there are springs); the middle one, after `frames`.
 fn springs(app: &mut App, spring: Spring, target: Vec3, frames: u32) -> Entity {
-    let springs: Vec<Entity> = (0..1000_u16)
-        .map(|i| spawn_translation(app, spring, Vec3::X * f32::from(i), target))
-        .collect();
+    let springs = many_translations(app, spring, target);
     run(app, frames);
     springs[500]
+}
+
+/// Two frames with `C` inserted on the entity (out of the systems' sight), `change` applied,
+/// two frames more, and `C` removed (not yet a frame after).
+fn while_away<C: Component + Default>(
+    app: &mut App,
+    entity: Entity,
+    change: impl FnOnce(EntityWorldMut),
+) {
+    app.world_mut().entity_mut(entity).insert(C::default());
+    run(app, 2);
+    change(app.world_mut().entity_mut(entity));
+    run(app, 2);
+    app.world_mut().entity_mut(entity).remove::<C>();
 }
 
 /// A spring retargeted while disabled heads for the new target from its first frame enabled
@@ -32,22 +46,15 @@ fn a_target_set_while_disabled_is_headed_for() {
         motion::<Translation>(&app, entity).velocity(),
     );
     assert!(velocity.length() > 1.0, "still moving: {velocity}");
-    app.world_mut().entity_mut(entity).insert(Disabled);
-    run(&mut app, 2);
     let new_target = Vec3::new(-50.0, 7.0, 1.0);
-    app.world_mut()
-        .get_mut::<TranslationSpring>(entity)
-        .unwrap()
-        .set_target(new_target);
-    run(&mut app, 2);
-    app.world_mut().entity_mut(entity).remove::<Disabled>();
+    while_away::<Disabled>(&mut app, entity, |mut entity| {
+        entity
+            .get_mut::<TranslationSpring>()
+            .unwrap()
+            .set_target(new_target);
+    });
     app.update();
-    let expected = spring
-        .transition(1.0 / 60.0)
-        .step(sprung::SpringState::new(at, velocity), new_target)
-        .position;
-    let moved = translation(&app, entity);
-    assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+    assert_stepped_from(&app, entity, spring, (at, velocity), new_target);
     run(&mut app, 600);
     assert_eq!(translation(&app, entity), new_target);
     assert!(asleep::<Translation>(&app, entity));
@@ -64,22 +71,12 @@ fn a_value_written_while_disabled_is_sprung_on_from_where_it_was_put() {
     let entity = springs(&mut app, spring, target, 10);
     let velocity = motion::<Translation>(&app, entity).velocity();
     assert!(velocity.length() > 1.0, "still moving: {velocity}");
-    app.world_mut().entity_mut(entity).insert(Disabled);
-    run(&mut app, 2);
     let put = Vec3::new(2.5, 0.5, 1.5);
-    app.world_mut()
-        .get_mut::<Transform>(entity)
-        .unwrap()
-        .translation = put;
-    run(&mut app, 2);
-    app.world_mut().entity_mut(entity).remove::<Disabled>();
+    while_away::<Disabled>(&mut app, entity, |mut entity| {
+        entity.get_mut::<Transform>().unwrap().translation = put;
+    });
     app.update();
-    let expected = spring
-        .transition(1.0 / 60.0)
-        .step(sprung::SpringState::new(put, velocity), target)
-        .position;
-    let moved = translation(&app, entity);
-    assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+    assert_stepped_from(&app, entity, spring, (put, velocity), target);
 }
 
 /// A spring asleep when its entity was disabled, retargeted meanwhile, wakes once enabled and
@@ -89,15 +86,13 @@ fn a_sleeping_spring_retargeted_while_disabled_wakes() {
     let mut app = app(60);
     let entity = springs(&mut app, Spring::snappy(), Vec3::ONE, 600);
     assert!(asleep::<Translation>(&app, entity));
-    app.world_mut().entity_mut(entity).insert(Disabled);
-    run(&mut app, 2);
     let new_target = Vec3::new(-5.0, 7.0, 1.0);
-    app.world_mut()
-        .get_mut::<TranslationSpring>(entity)
-        .unwrap()
-        .set_target(new_target);
-    run(&mut app, 2);
-    app.world_mut().entity_mut(entity).remove::<Disabled>();
+    while_away::<Disabled>(&mut app, entity, |mut entity| {
+        entity
+            .get_mut::<TranslationSpring>()
+            .unwrap()
+            .set_target(new_target);
+    });
     run(&mut app, 600);
     assert_eq!(translation(&app, entity), new_target);
 }
@@ -112,25 +107,12 @@ fn a_spring_put_to_sleep_by_hand_takes_up_what_was_written_meanwhile() {
     let target = Vec3::new(3.0, 2.0, 4.0);
     let entity = springs(&mut app, spring, target, 10);
     let velocity = motion::<Translation>(&app, entity).velocity();
-    app.world_mut()
-        .entity_mut(entity)
-        .insert(SpringAsleep::<Translation>::default());
-    run(&mut app, 2);
     let put = Vec3::new(2.5, 0.5, 1.5);
-    app.world_mut()
-        .get_mut::<Transform>(entity)
-        .unwrap()
-        .translation = put;
-    run(&mut app, 2);
+    while_away::<SpringAsleep<Translation>>(&mut app, entity, |mut entity| {
+        entity.get_mut::<Transform>().unwrap().translation = put;
+    });
+    // Removed, and no frame since: what the two frames asleep left.
     assert_eq!(translation(&app, entity), put, "asleep, it does not move");
-    app.world_mut()
-        .entity_mut(entity)
-        .remove::<SpringAsleep<Translation>>();
     app.update();
-    let expected = spring
-        .transition(1.0 / 60.0)
-        .step(sprung::SpringState::new(put, velocity), target)
-        .position;
-    let moved = translation(&app, entity);
-    assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+    assert_stepped_from(&app, entity, spring, (put, velocity), target);
 }

@@ -44,6 +44,31 @@ pub(crate) fn spawn_translation(app: &mut App, spring: Spring, from: Vec3, to: V
         .id()
 }
 
+/// A thousand translation springs in one table (several of the blocks of rows whose change
+/// ticks the step tests together), from `x = 0, 1, …` toward `target`.
+pub(crate) fn many_translations(app: &mut App, spring: Spring, target: Vec3) -> Vec<Entity> {
+    (0..1000_u16)
+        .map(|i| spawn_translation(app, spring, Vec3::X * f32::from(i), target))
+        .collect()
+}
+
+/// Asserts that the entity's translation is one exact 60 fps step of `spring` from `from`,
+/// moving at `velocity`, toward `target` (within 1e-4).
+pub(crate) fn assert_stepped_from(
+    app: &App,
+    entity: Entity,
+    spring: Spring,
+    (from, velocity): (Vec3, Vec3),
+    target: Vec3,
+) {
+    let expected = spring
+        .transition(1.0 / 60.0)
+        .step(SpringState::new(from, velocity), target)
+        .position;
+    let moved = translation(app, entity);
+    assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+}
+
 /// The entity's translation.
 pub(crate) fn translation(app: &App, entity: Entity) -> Vec3 {
     app.world().get::<Transform>(entity).unwrap().translation

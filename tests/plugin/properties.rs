@@ -4,7 +4,9 @@ use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 use bevy_sprung::space::rotation_vector;
 
-use crate::harness::{app, asleep, motion, run, spawn_translation, translation};
+use crate::harness::{
+    app, asleep, assert_stepped_from, many_translations, motion, run, translation,
+};
 
 /// A component of the user's own, with a scalar field.
 #[derive(Component, Default)]
@@ -335,13 +337,9 @@ fn a_value_written_mid_flight_is_sprung_on_from_where_it_was_put() {
 fn a_value_written_among_many_springs_moves_that_one_alone() {
     let spring = Spring::from_natural_frequency(10.0, 0.6).unwrap();
     let target = Vec3::new(3.0, 2.0, 4.0);
-    let spawn = |app: &mut App| -> Vec<Entity> {
-        (0..1000_u16)
-            .map(|i| spawn_translation(app, spring, Vec3::X * f32::from(i), target))
-            .collect()
-    };
     let (mut written, mut untouched) = (app(60), app(60));
-    let (springs, twins) = (spawn(&mut written), spawn(&mut untouched));
+    let springs = many_translations(&mut written, spring, target);
+    let twins = many_translations(&mut untouched, spring, target);
     run(&mut written, 6);
     run(&mut untouched, 6);
     let one = springs[300];
@@ -356,12 +354,7 @@ fn a_value_written_among_many_springs_moves_that_one_alone() {
         written.update();
         untouched.update();
         if frame == 0 {
-            let expected = spring
-                .transition(1.0 / 60.0)
-                .step(sprung::SpringState::new(put, velocity), target)
-                .position;
-            let moved = translation(&written, one);
-            assert!(moved.distance(expected) < 1e-4, "{moved} vs {expected}");
+            assert_stepped_from(&written, one, spring, (put, velocity), target);
         }
         for (row, (&spring, &twin)) in springs.iter().zip(&twins).enumerate() {
             if spring != one {
