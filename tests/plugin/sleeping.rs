@@ -134,6 +134,57 @@ fn setting_the_same_target_does_not_wake_it() {
     );
 }
 
+/// Among ten thousand sleeping springs in one table (several of the long stretches and short
+/// blocks the waking system tests their change ticks in), exactly the retargeted ones wake:
+/// at the first and last row, on both sides of block and stretch boundaries, and in the
+/// short last stretch. Each arrives; none of the others moves.
+#[test]
+fn among_many_sleeping_springs_exactly_the_retargeted_ones_wake() {
+    let mut app = recording_app();
+    let count: u16 = 10_000;
+    let springs: Vec<Entity> = (0..count)
+        .map(|i| {
+            let at = Vec3::X * f32::from(i);
+            spawn_translation(&mut app, Spring::stiff(), at, at)
+        })
+        .collect();
+    run(&mut app, 3);
+    assert!(
+        springs
+            .iter()
+            .all(|&entity| asleep::<Translation>(&app, entity))
+    );
+    let rows: [u16; 9] = [0, 255, 256, 4095, 4096, 4097, 8191, 8192, 9999];
+    let target = |row: u16| Vec3::new(f32::from(row), 100.0, 0.0);
+    for row in rows {
+        app.world_mut()
+            .get_mut::<TranslationSpring>(springs[usize::from(row)])
+            .unwrap()
+            .set_target(target(row));
+    }
+    app.update();
+    let moved: std::collections::HashSet<Entity> = app
+        .world()
+        .resource::<ChangedTransforms>()
+        .0
+        .iter()
+        .copied()
+        .collect();
+    let retargeted: std::collections::HashSet<Entity> =
+        rows.iter().map(|&row| springs[usize::from(row)]).collect();
+    assert_eq!(moved, retargeted, "the springs that moved");
+    run(&mut app, 300);
+    for (row, &entity) in (0..count).zip(&springs) {
+        let expected = if rows.contains(&row) {
+            target(row)
+        } else {
+            Vec3::X * f32::from(row)
+        };
+        assert_eq!(translation(&app, entity), expected, "row {row}");
+        assert!(asleep::<Translation>(&app, entity), "row {row}");
+    }
+}
+
 /// Counts settle events per entity.
 #[derive(Resource, Default)]
 struct Settled(Vec<Entity>);
