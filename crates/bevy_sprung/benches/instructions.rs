@@ -6,7 +6,9 @@
 //! animation's schedule, after warm-up frames), and prints instructions per entity per frame
 //! with the ratios the performance goals are stated in. It needs `valgrind` on the `PATH`.
 //! `… --bench instructions -- one METHOD COUNT FRAMES VARY` runs one scene without callgrind
-//! (what the driver runs under it).
+//! (what the driver runs under it); `… -- time METHOD COUNT FRAMES VARY [whole]` times one
+//! scene's frames (its schedule, or with `whole` whole frames; `idle`, an app with nothing to
+//! animate, is the base of whole frames).
 
 #[path = "scenarios/mod.rs"]
 mod scenarios;
@@ -15,6 +17,7 @@ use std::process::Command;
 
 use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
 use scenarios::{FRAME, Method, varying_dt};
 
 /// Entities per scene.
@@ -42,10 +45,16 @@ fn scenes() -> Vec<(Method, bool)> {
     ]
 }
 
+/// Scenes that only [`time`] runs (by name): no animation to count.
+fn timed_only() -> Vec<Method> {
+    vec![Method::Idle]
+}
+
 fn method_named(name: &str) -> Method {
     scenes()
         .into_iter()
         .map(|(method, _)| method)
+        .chain(timed_only())
         .find(|method| method.name() == name)
         .unwrap_or_else(|| panic!("no scene {name}"))
 }
@@ -82,17 +91,30 @@ fn one(method: Method, count: usize, frames: u64, vary: bool) {
 
 /// One scene's frames timed one by one (task pools as the criterion suite sets them): the
 /// fastest and the median frame, for A/B comparisons that a busy machine's slow frames do not
-/// blur.
-fn time(method: Method, count: usize, frames: u64, vary: bool) {
+/// blur. With `whole`, whole frames (`app.update()`: every schedule of `MinimalPlugins`, as a
+/// game's frame runs them, with the time step set through Bevy's `TimeUpdateStrategy`) rather
+/// than the animation's schedule alone.
+fn time(method: Method, count: usize, frames: u64, vary: bool, whole: bool) {
     let mut app = method.app(count, false);
     measured_warm_up(&mut app, method, vary);
     let schedule = method.schedule();
     let mut times: Vec<f64> = (0..frames)
         .map(|frame| {
+            let dt = if vary { varying_dt(frame) } else { FRAME };
             let world = app.world_mut();
-            Method::set_dt(world, if vary { varying_dt(frame) } else { FRAME });
+            if whole {
+                world.insert_resource(TimeUpdateStrategy::ManualDuration(
+                    core::time::Duration::from_secs_f32(dt),
+                ));
+            } else {
+                Method::set_dt(world, dt);
+            }
             let start = std::time::Instant::now();
-            world.run_schedule(schedule);
+            if whole {
+                app.update();
+            } else {
+                world.run_schedule(schedule);
+            }
             start.elapsed().as_secs_f64() * 1e6
         })
         .collect();
@@ -215,6 +237,7 @@ fn main() {
             args[2].parse().expect("a count"),
             args[3].parse().expect("a frame count"),
             args[4].parse().expect("true or false"),
+            args.get(5).is_some_and(|mode| mode == "whole"),
         );
         return;
     }

@@ -147,6 +147,9 @@ pub(crate) enum Method {
     /// No animation: a system that moves every translation by a constant step. The floor of a
     /// frame that changes every `Transform` (change ticks, and propagation when it runs).
     Touch,
+    /// Nothing to animate: the plugin, and entities with a `Transform` alone. What a whole
+    /// frame of Bevy's costs that no animation can save (the base of sleeping springs' cost).
+    Idle,
 }
 
 impl Method {
@@ -170,6 +173,7 @@ impl Method {
             Self::SmoothNudge => "smooth_nudge".into(),
             Self::Tweening => "bevy_tweening".into(),
             Self::Touch => "touch".into(),
+            Self::Idle => "idle".into(),
         }
     }
 
@@ -181,7 +185,8 @@ impl Method {
             | Self::SpringsAtRest
             | Self::UiScaleSprings
             | Self::UiTranslationSprings
-            | Self::SpringDamper { .. } => PostUpdate.intern(),
+            | Self::SpringDamper { .. }
+            | Self::Idle => PostUpdate.intern(),
             Self::Euler
             | Self::EulerUiScale
             | Self::BareExact
@@ -207,7 +212,8 @@ impl Method {
             Self::Springs { .. }
             | Self::SpringsAtRest
             | Self::UiScaleSprings
-            | Self::UiTranslationSprings => {
+            | Self::UiTranslationSprings
+            | Self::Idle => {
                 app.add_plugins(SpringPlugin::default());
             }
             Self::SpringDamper { .. } => {
@@ -320,7 +326,7 @@ impl Method {
                         .map(|i| (Transform::from_translation(start(i)), HandTarget(target(i)))),
                 );
             }
-            Self::Touch => {
+            Self::Touch | Self::Idle => {
                 world.spawn_batch((0..count).map(|i| Transform::from_translation(start(i))));
             }
             Self::Tweening => {
@@ -385,6 +391,8 @@ impl Method {
                 .count();
         if self == Self::SpringsAtRest {
             assert_eq!(asleep, count, "{self:?}: every spring should sleep");
+            assert_eq!(written, 0, "{self:?}: nothing should be written");
+        } else if self == Self::Idle {
             assert_eq!(written, 0, "{self:?}: nothing should be written");
         } else {
             assert_eq!(asleep, 0, "{self:?}: no spring should sleep");
