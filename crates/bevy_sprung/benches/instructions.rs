@@ -6,9 +6,11 @@
 //! animation's schedule, after warm-up frames), and prints instructions per entity per frame
 //! with the ratios the performance goals are stated in. It needs `valgrind` on the `PATH`.
 //! `… --bench instructions -- one METHOD COUNT FRAMES VARY` runs one scene without callgrind
-//! (what the driver runs under it); `… -- time METHOD COUNT FRAMES VARY [whole]` times one
-//! scene's frames (its schedule, or with `whole` whole frames; `idle`, an app with nothing to
-//! animate, is the base of whole frames).
+//! (what the driver runs under it); `… -- time METHOD COUNT FRAMES VARY [MODE]` times one
+//! scene's frames: its schedule, or with MODE `whole` whole frames, `static` whole frames with
+//! transform propagation as Bevy sets it up, `moving` with propagation set up for a scene whose
+//! `Transform`s mostly move (`idle`, an app with nothing to animate, is the base of whole
+//! frames, and `touch`, a system that moves every translation, the floor of propagated ones).
 
 #[path = "scenarios/mod.rs"]
 mod scenarios;
@@ -18,7 +20,7 @@ use std::process::Command;
 use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
-use scenarios::{FRAME, Method, varying_dt};
+use scenarios::{FRAME, Method, Propagation, varying_dt};
 
 /// Entities per scene.
 const COUNT: usize = 100_000;
@@ -47,7 +49,7 @@ fn scenes() -> Vec<(Method, bool)> {
 
 /// Scenes that only [`time`] runs (by name): no animation to count.
 fn timed_only() -> Vec<Method> {
-    vec![Method::Idle]
+    vec![Method::Idle, Method::Touch]
 }
 
 fn method_named(name: &str) -> Method {
@@ -72,7 +74,7 @@ fn measured(app: &mut App, method: Method, frames: u64, vary: bool) {
 
 /// One scene, as callgrind runs it.
 fn one(method: Method, count: usize, frames: u64, vary: bool) {
-    let mut app = method.app(count, false);
+    let mut app = method.app(count, Propagation::Off);
     // Every schedule (the spring schedule too) on the calling thread: callgrind counts only the
     // thread `measured` runs on. The driver runs this with no compute threads, so the springs
     // step in one loop on this thread as well.
@@ -93,9 +95,16 @@ fn one(method: Method, count: usize, frames: u64, vary: bool) {
 /// fastest and the median frame, for A/B comparisons that a busy machine's slow frames do not
 /// blur. With `whole`, whole frames (`app.update()`: every schedule of `MinimalPlugins`, as a
 /// game's frame runs them, with the time step set through Bevy's `TimeUpdateStrategy`) rather
-/// than the animation's schedule alone.
-fn time(method: Method, count: usize, frames: u64, vary: bool, whole: bool) {
-    let mut app = method.app(count, false);
+/// than the animation's schedule alone, with transform propagation as `propagation` says.
+fn time(
+    method: Method,
+    count: usize,
+    frames: u64,
+    vary: bool,
+    whole: bool,
+    propagation: Propagation,
+) {
+    let mut app = method.app(count, propagation);
     measured_warm_up(&mut app, method, vary);
     let schedule = method.schedule();
     let mut times: Vec<f64> = (0..frames)
@@ -232,12 +241,20 @@ fn main() {
         return;
     }
     if args.first().map(String::as_str) == Some("time") {
+        let (whole, propagation) = match args.get(5).map(String::as_str) {
+            None => (false, Propagation::Off),
+            Some("whole") => (true, Propagation::Off),
+            Some("static") => (true, Propagation::StaticScene),
+            Some("moving") => (true, Propagation::MovingScene),
+            Some(mode) => panic!("no mode {mode}: whole, static or moving"),
+        };
         time(
             method_named(&args[1]),
             args[2].parse().expect("a count"),
             args[3].parse().expect("a frame count"),
             args[4].parse().expect("true or false"),
-            args.get(5).is_some_and(|mode| mode == "whole"),
+            whole,
+            propagation,
         );
         return;
     }

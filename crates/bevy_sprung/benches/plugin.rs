@@ -16,14 +16,16 @@
 //! - `tweens`: `smooth_nudge` and bevy_tweening 0.16, for reference;
 //! - `frame_1m`: whole frames of a million translation springs with transform propagation,
 //!   on the multi-threaded executor, against the Euler system and a system that only moves
-//!   every translation (the floor any animation of a million `Transform`s pays in Bevy).
+//!   every translation (the floor any animation of a million `Transform`s pays in Bevy): set up
+//!   for a scene whose `Transform`s mostly move (`StaticTransformOptimizations::Disabled`), and
+//!   the springs once more with Bevy's default, the static-scene optimisation.
 
 #[path = "scenarios/mod.rs"]
 mod scenarios;
 
 use bevy::prelude::*;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use scenarios::{FRAME, Method, varying_dt};
+use scenarios::{FRAME, Method, Propagation, varying_dt};
 
 /// Entities per scene (`SPRUNG_BENCH_COUNT` overrides it, for looking at cache effects).
 fn count() -> usize {
@@ -45,7 +47,7 @@ fn schedule_group(c: &mut Criterion, group: &str, methods: &[Method], vary: bool
         let schedule = method.schedule();
         let mut frame = 0_u64;
         group.bench_function(BenchmarkId::from_parameter(method.name()), |b| {
-            let app = app.get_or_insert_with(|| method.app(count(), false));
+            let app = app.get_or_insert_with(|| method.app(count(), Propagation::Off));
             b.iter(|| {
                 let world = app.world_mut();
                 frame += 1;
@@ -151,10 +153,20 @@ fn frame_1m(c: &mut Criterion) {
     let mut group = c.benchmark_group("frame_1m");
     group.throughput(Throughput::Elements(count as u64));
     group.sample_size(10);
-    for method in [Method::Springs { springs: 1 }, Method::Euler, Method::Touch] {
+    let moving = Propagation::MovingScene;
+    for (method, propagation) in [
+        (Method::Springs { springs: 1 }, moving),
+        (Method::Euler, moving),
+        (Method::Touch, moving),
+        (Method::Springs { springs: 1 }, Propagation::StaticScene),
+    ] {
         let mut app = None;
-        group.bench_function(BenchmarkId::from_parameter(method.name()), |b| {
-            let app = app.get_or_insert_with(|| method.app(count, true));
+        let name = match propagation {
+            Propagation::StaticScene => format!("{}_static_scene", method.name()),
+            _ => method.name(),
+        };
+        group.bench_function(BenchmarkId::from_parameter(name), |b| {
+            let app = app.get_or_insert_with(|| method.app(count, propagation));
             b.iter(|| app.update());
         });
         if let Some(mut app) = app {

@@ -112,6 +112,19 @@ pub(crate) fn minimal_plugins() -> bevy::app::PluginGroupBuilder {
     MinimalPlugins.set(TaskPoolPlugin { task_pool_options })
 }
 
+/// Whether a scene's whole frames propagate transforms, and how.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Propagation {
+    /// No `TransformPlugin`: the animation alone.
+    Off,
+    /// `TransformPlugin` with Bevy's defaults: the static-scene optimisation marks the tree of
+    /// every changed `Transform` dirty, entity by entity, before propagating.
+    StaticScene,
+    /// `TransformPlugin` with `StaticTransformOptimizations::Disabled`: what a scene whose
+    /// `Transform`s mostly move every frame sets (the marking then costs more than it saves).
+    MovingScene,
+}
+
 /// What animates the entities.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Method {
@@ -197,16 +210,19 @@ impl Method {
         }
     }
 
-    /// An app with `count` entities animated by this method (with transform propagation if
-    /// `propagate`), run for a few frames so that the springs at rest sleep.
-    pub(crate) fn app(self, count: usize, propagate: bool) -> App {
+    /// An app with `count` entities animated by this method (with transform propagation as
+    /// `propagation` says), run for a few frames so that the springs at rest sleep.
+    pub(crate) fn app(self, count: usize, propagation: Propagation) -> App {
         let mut app = App::new();
         app.add_plugins(minimal_plugins())
             .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f32(
                 FRAME,
             )));
-        if propagate {
+        if propagation != Propagation::Off {
             app.add_plugins(TransformPlugin);
+        }
+        if propagation == Propagation::MovingScene {
+            app.insert_resource(bevy::transform::StaticTransformOptimizations::Disabled);
         }
         match self {
             Self::Springs { .. }
