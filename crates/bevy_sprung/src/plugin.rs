@@ -48,7 +48,10 @@ use crate::transform::TransformSpringPlugin;
 /// the compute pool the cores left after one thread each for I/O and async tasks: on a
 /// machine with two cores one thread, so the springs step on both cores with
 /// Bevy's defaults. On more cores, ask for a compute thread per core (the I/O and async threads
-/// mostly sleep) to step them on all of them:
+/// mostly sleep) to step them on all of them. On two cores this helps frames where many
+/// `Transform`s move, as Bevy's transform propagation runs on the compute pool alone: whole
+/// frames of a million moving springs took 8.7–9.7 ms with it against 10.2 ms without (with
+/// the setting in the next section).
 /// ```
 /// use bevy::app::{TaskPoolOptions, TaskPoolPlugin, TaskPoolThreadAssignmentPolicy};
 /// use bevy::prelude::*;
@@ -81,7 +84,7 @@ use crate::transform::TransformSpringPlugin;
 /// When most `Transform`s move every frame, as in a field of a million springs, that marking
 /// is all cost: on the two-core benchmark machine it took about 25 ms of a 36 ms frame with a
 /// million moving springs. Turn it off for such a scene and the whole frame (springs and
-/// propagation) took 9–10 ms, about what a hand-written Euler spring's frame takes:
+/// propagation) took 9–10 ms, level with a hand-written Euler spring's frame:
 /// ```
 /// use bevy::prelude::*;
 /// use bevy::transform::StaticTransformOptimizations;
