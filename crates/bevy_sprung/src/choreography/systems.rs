@@ -9,6 +9,7 @@ use super::sequence::{SequencePhase, SpringSequence, Tick};
 use crate::clock::SpringTime;
 use crate::control::SpringControl;
 use crate::property::SpringProperty;
+use crate::spring::trigger_if_alive;
 
 /// Triggered on an entity when its [`SpringSequence<P>`] has played its last step: the
 /// tween-completion event for a whole choreography.
@@ -88,7 +89,7 @@ pub(crate) fn drive_sequences<P, C, A>(
         // Something else set the spring's target while a step played.
         if sequence.phase() == SequencePhase::Playing && !sequence.is_resuming() && !on_step {
             sequence.interrupt();
-            commands.trigger(SequenceInterrupted::<P>::new(entity));
+            trigger_if_alive(&mut commands, SequenceInterrupted::<P>::new(entity));
             continue;
         }
         let dt = steps.dt(spring.clock());
@@ -102,7 +103,9 @@ pub(crate) fn drive_sequences<P, C, A>(
                     spring.retarget(step.target);
                 }
             }
-            Tick::Completed => commands.trigger(SequenceCompleted::<P>::new(entity)),
+            Tick::Completed => {
+                trigger_if_alive(&mut commands, SequenceCompleted::<P>::new(entity));
+            }
         }
     }
 }

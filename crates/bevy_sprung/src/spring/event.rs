@@ -52,6 +52,22 @@ impl<P: SpringProperty> Clone for SpringSettled<P> {
 
 impl<P: SpringProperty> Copy for SpringSettled<P> {}
 
+/// Triggers `event` when the commands are applied, if its entity is still alive then: an
+/// observer of an earlier event (this frame's settle of another spring, say) may have despawned
+/// it meanwhile, and an event for a despawned entity makes ordinary observer code
+/// (`commands.entity(event.entity)…`) panic. Every entity event of this crate is triggered this
+/// way.
+pub(crate) fn trigger_if_alive<E>(commands: &mut Commands, event: E)
+where
+    E: EntityEvent<Trigger<'static>: Default>,
+{
+    commands.queue(move |world: &mut World| {
+        if world.get_entity(event.event_target()).is_ok() {
+            world.trigger(event);
+        }
+    });
+}
+
 impl<P: SpringProperty> fmt::Debug for SpringSettled<P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("SpringSettled")

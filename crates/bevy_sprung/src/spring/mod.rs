@@ -19,6 +19,7 @@ pub use plugin::{
     PropertySystems, SpringPropertyPlugin, SpringSchedulePlugin, SpringSystems, SpringUpdate,
 };
 
+pub(crate) use event::trigger_if_alive;
 pub(crate) use plugin::{
     add_property_systems, add_systems_on_first_use, first_use, spring_schedule,
 };

@@ -490,7 +490,7 @@ fn put_to_sleep<P: SpringProperty>(commands: &ParallelCommands, entity: Entity) 
         commands
             .entity(entity)
             .try_insert(SpringAsleep::<P>::default());
-        commands.trigger(SpringSettled::<P>::new(entity));
+        super::trigger_if_alive(&mut commands, SpringSettled::<P>::new(entity));
     });
 }
 
