@@ -2,8 +2,12 @@
 
 use alloc::borrow::Cow;
 
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::world::DeferredWorld;
 use bevy::platform::collections::HashSet;
 use bevy::prelude::*;
+
+use crate::spring::trigger_if_alive;
 
 /// Makes this entity's springs report together: when every spring on the entity (any property)
 /// has settled, [`AllSpringsSettled`] is triggered on it, once; and when every spring of every
@@ -12,6 +16,12 @@ use bevy::prelude::*;
 /// again. The per-spring [`SpringSettled`](crate::spring::SpringSettled) events fire as always.
 ///
 /// Only entities with a `SpringGroup` are tracked: springs without one pay nothing.
+///
+/// Members that go away count as settled: when a member with a spring in motion is despawned,
+/// loses its `SpringGroup` or its springs, the group reports once its other members' springs
+/// have settled (at once if none is moving), and no event is triggered for the member itself.
+/// A group whose members all went away reports once. No event is delivered to a despawned
+/// entity.
 ///
 /// # Example
 /// ```
@@ -36,7 +46,7 @@ use bevy::prelude::*;
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Default, Clone, PartialEq, Eq, Hash)]
-#[component(on_add = crate::spring::first_use::<SpringGroup>)]
+#[component(on_add = crate::spring::first_use::<SpringGroup>, on_remove = leave_group)]
 #[reflect(Component, Debug, Default, PartialEq, Clone)]
 pub struct SpringGroup {
     /// The group's name (`None`: the entity alone).
@@ -82,6 +92,9 @@ pub(crate) struct SettleTracker {
     in_motion: HashSet<Entity>,
     /// Entities with an awake spring after this frame's steps.
     awake: HashSet<Entity>,
+    /// Groups a member in motion left (despawned, or its `SpringGroup` removed): they report
+    /// if no other member is moving.
+    left: Vec<Cow<'static, str>>,
 }
 
 impl SettleTracker {
@@ -89,6 +102,35 @@ impl SettleTracker {
     pub(crate) fn moving(&mut self, entity: Entity) {
         self.in_motion.insert(entity);
     }
+
+    /// Whether [`announce_settled`] has anything to look at.
+    fn has_news(&self) -> bool {
+        !(self.in_motion.is_empty() && self.left.is_empty())
+    }
+}
+
+/// The hook of a [`SpringGroup`] removed (also when its entity is despawned): a member in
+/// motion leaves its group, which then reports if none of its other members is moving.
+fn leave_group(mut world: DeferredWorld, context: HookContext) {
+    let name = world
+        .get::<SpringGroup>(context.entity)
+        .and_then(|group| group.name.clone());
+    let Some(mut tracker) = world.get_resource_mut::<SettleTracker>() else {
+        return;
+    };
+    tracker.awake.remove(&context.entity);
+    if tracker.in_motion.remove(&context.entity)
+        && let Some(name) = name
+        && !tracker.left.contains(&name)
+    {
+        tracker.left.push(name);
+    }
+}
+
+/// Whether any grouped entity is in motion or left its group in motion: the run condition of
+/// [`announce_settled`].
+pub(super) fn has_news(tracker: Option<Res<SettleTracker>>) -> bool {
+    tracker.is_some_and(|tracker| tracker.has_news())
 }
 
 /// After property `C`'s springs stepped: notes the grouped entities whose spring on it is
@@ -110,17 +152,21 @@ pub(super) fn announce_settled(
     groups: Query<&SpringGroup>,
     mut commands: Commands,
 ) {
-    let SettleTracker { in_motion, awake } = &mut *tracker;
-    let mut settled_groups: Vec<Cow<'static, str>> = Vec::new();
+    let SettleTracker {
+        in_motion,
+        awake,
+        left,
+    } = &mut *tracker;
+    let mut settled_groups: Vec<Cow<'static, str>> = core::mem::take(left);
     in_motion.retain(|&entity| {
         if awake.contains(&entity) {
             return true;
         }
-        // Despawned, or no longer grouped: forget it quietly.
+        // Not grouped any more (its group heard of it in `leave_group`).
         let Ok(group) = groups.get(entity) else {
             return false;
         };
-        commands.trigger(AllSpringsSettled { entity });
+        trigger_if_alive(&mut commands, AllSpringsSettled { entity });
         if let Some(name) = &group.name
             && !settled_groups.contains(name)
         {

@@ -46,7 +46,7 @@ impl Plugin for ChoreographyPlugin {
             schedule.add_systems(
                 group::announce_settled
                     .after(SpringSystems)
-                    .run_if(any_with_component::<SpringGroup>),
+                    .run_if(group::has_news),
             );
         });
     }
