@@ -99,14 +99,35 @@ impl<P: SpringProperty> PropertySpring<P> {
         super::plugin::spring_added(&mut world, TypeId::of::<Self>());
     }
 
-    /// The component hook: a spring inserted (or replaced) starts from rest toward its target,
-    /// as its [`SpringMotion`] says; a velocity it was given applies at its first step.
+    /// The component hook: a spring inserted (or replaced, or inserted again after it was
+    /// removed) starts from rest toward its target, as its [`SpringMotion`] says, from wherever
+    /// the property is; a velocity it was given applies at its first step. A target that is not
+    /// a valid value is not headed for: the motion rests where the property is, and the first
+    /// step refuses the target. A spring that slept before is woken.
     fn on_insert(mut world: DeferredWorld, context: HookContext) {
-        let Some(&spring) = world.get::<Self>(context.entity) else {
+        let entity = context.entity;
+        let Some(&spring) = world.get::<Self>(entity) else {
             return;
         };
-        if let Some(mut motion) = world.get_mut::<SpringMotion<P>>(context.entity) {
-            *motion = SpringMotion::toward(spring.target, spring.rest);
+        let toward = if P::Space::is_valid(spring.target) {
+            spring.target
+        } else {
+            world
+                .get::<P::Component>(entity)
+                .map(P::get)
+                .filter(|&current| P::Space::is_valid(current))
+                .unwrap_or_default()
+        };
+        if let Some(mut motion) = world.get_mut::<SpringMotion<P>>(entity) {
+            *motion = SpringMotion::toward(toward, spring.rest);
+        }
+        // The marker of the spring this one replaced: its motion is gone, so nothing else would
+        // wake it.
+        if world.entity(entity).contains::<SpringAsleep<P>>() {
+            world
+                .commands()
+                .entity(entity)
+                .try_remove::<SpringAsleep<P>>();
         }
     }
 }

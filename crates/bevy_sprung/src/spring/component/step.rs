@@ -452,24 +452,23 @@ impl<P: SpringProperty> SpringMotion<P> {
         current: ValueOf<P>,
         table: &TransitionTable,
     ) {
+        // The target the motion heads for is valid by construction (the insert hook rests it
+        // where the property is when the target is not); one written through reflection is
+        // replaced the same way, so that nothing is ever sprung from an invalid value.
+        if !P::Space::is_valid(self.active_target) {
+            self.active_target = [current, config.target]
+                .into_iter()
+                .find(|&value| P::Space::is_valid(value))
+                .unwrap_or_default();
+            self.offset = Carried::new(OffsetOf::<P>::ZERO);
+        }
         if !P::Space::is_valid(config.target) {
             warn_once!(
                 "bevy_sprung: a spring's target is not finite ({:?}); it keeps its last valid \
                  target",
                 config.target
             );
-            let active = self.active_target;
-            config.target = if P::Space::is_valid(active) {
-                active
-            } else if P::Space::is_valid(current) {
-                current
-            } else {
-                ValueOf::<P>::default()
-            };
-            if !P::Space::is_valid(active) {
-                self.active_target = config.target;
-                self.offset = Carried::new(OffsetOf::<P>::ZERO);
-            }
+            config.target = self.active_target;
         }
         if !self.velocity.is_finite() {
             warn_once!("bevy_sprung: a spring's velocity is not finite; it is reset to zero");
