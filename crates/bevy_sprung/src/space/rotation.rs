@@ -1,6 +1,6 @@
 //! Rotations, the short way round.
 
-use bevy::math::{Quat, Rot2, Vec3, Vec3A};
+use bevy::math::{DQuat, Quat, Rot2, Vec3, Vec3A};
 
 use super::{Carried, SpringSpace};
 
@@ -18,9 +18,11 @@ impl SpringSpace for ShortestArc {
     type Offset = Vec3A;
     type Velocity = Vec3;
 
+    /// Finite, with a squared length that is a normal `f32` (neither zero, nor subnormal, nor
+    /// overflowing): one that normalises exactly.
     #[inline]
     fn is_valid(value: Quat) -> bool {
-        value.is_finite() && value.length_squared() > 0.0
+        value.length_squared().is_normal()
     }
 
     #[inline]
@@ -35,7 +37,7 @@ impl SpringSpace for ShortestArc {
 
     #[inline]
     fn at_offset(target: Quat, offset: Vec3A) -> Quat {
-        (target * Quat::from_scaled_axis(offset.into())).normalize()
+        (target * turn(offset)).normalize()
     }
 
     /// The velocity is re-expressed in the new target's frame, so that the angular velocity in
@@ -53,6 +55,24 @@ impl SpringSpace for ShortestArc {
             (new_target.inverse() * old_target) * velocity,
         )
     }
+}
+
+/// The rotation by the rotation vector `offset`. An angle whose square overflows `f32` (a
+/// spring kicked at 10²⁵ rad/s) is turned in `f64`, where `Quat::from_scaled_axis` would divide
+/// by an infinite length and return NaN: any finite offset is a rotation.
+#[inline]
+fn turn(offset: Vec3A) -> Quat {
+    if offset.length_squared().is_finite() {
+        Quat::from_scaled_axis(offset.into())
+    } else {
+        huge_turn(offset)
+    }
+}
+
+/// [`turn`] for angles beyond `1.8·10¹⁹` rad, in `f64` (whose square of `f32::MAX` is finite).
+#[cold]
+fn huge_turn(offset: Vec3A) -> Quat {
+    DQuat::from_scaled_axis(Vec3::from(offset).as_dvec3()).as_quat()
 }
 
 /// The rotation vector (axis × angle, angle in `[0, π]`) of a unit quaternion, accurate for small
@@ -96,9 +116,11 @@ impl SpringSpace for ShortestAngle {
     type Offset = f32;
     type Velocity = f32;
 
+    /// Finite, with a squared length that is a normal `f32` (neither zero, nor subnormal, nor
+    /// overflowing): one that normalises exactly (`Rot2::normalize` asserts that it does).
     #[inline]
     fn is_valid(value: Rot2) -> bool {
-        value.is_finite() && value.length_squared() > 0.0
+        value.length_squared().is_normal()
     }
 
     #[inline]
