@@ -2,6 +2,8 @@
 
 use core::any::TypeId;
 
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 
 use crate::clock::SpringTime;
@@ -40,6 +42,11 @@ struct FixedSamples {
 /// `GlobalTransform` places it. The follower itself should be a root entity (its springs move
 /// its local `Transform`).
 ///
+/// When the target goes away (despawned, with its parent or alone, or its `Transform` removed)
+/// the follower comes to rest on its last goal, and sleeps; it follows again if the target comes
+/// back. Removing the `SpringFollow` does the same: the spring keeps its target (or the one you
+/// set) and no longer follows a moving one.
+///
 /// # Example
 /// ```
 /// use bevy::prelude::*;
@@ -62,7 +69,7 @@ struct FixedSamples {
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
-#[component(on_add = crate::spring::first_use::<SpringFollow>)]
+#[component(on_add = crate::spring::first_use::<SpringFollow>, on_remove = stop_following)]
 #[reflect(Component)]
 pub struct SpringFollow {
     /// The entity to follow.
@@ -129,7 +136,8 @@ fn world_position(
     )
 }
 
-/// After each fixed step: record where fixed-timestep targets are.
+/// After each fixed step: record where fixed-timestep targets are (a target gone forgets its
+/// samples, so that it is not followed along a stale velocity).
 fn sample_fixed_targets(
     mut followers: Query<&mut SpringFollow>,
     transforms: Query<(&Transform, Option<&ChildOf>)>,
@@ -139,15 +147,19 @@ fn sample_fixed_targets(
         if follow.motion != TargetMotion::FixedTimestep {
             continue;
         }
-        if let Some(position) = world_position(follow.target, &transforms, &globals) {
-            let latest = follow.fixed.latest.replace(position);
-            follow.fixed.previous = latest;
+        match world_position(follow.target, &transforms, &globals) {
+            Some(position) => {
+                let latest = follow.fixed.latest.replace(position);
+                follow.fixed.previous = latest;
+            }
+            None => follow.fixed = FixedSamples::default(),
         }
     }
 }
 
 /// Before the translation springs step: aim every follower's spring at its target, with the
-/// target's velocity.
+/// target's velocity. A follower whose target is gone (despawned, or without a `Transform`)
+/// comes to rest on its last goal: its target stops moving.
 fn follow_targets(
     time: SpringTime,
     fixed_time: Res<Time<Fixed>>,
@@ -157,45 +169,28 @@ fn follow_targets(
 ) {
     let steps = time.steps();
     for (mut follow, mut spring) in &mut followers {
-        let (position, velocity) = match follow.motion {
-            TargetMotion::PerFrame => {
-                let Some(position) = world_position(follow.target, &transforms, &globals) else {
-                    continue;
-                };
-                let dt = steps.dt(spring.clock());
-                let velocity = match follow.last_frame_position {
-                    Some(last) if dt > 0.0 => (position - last) / dt,
-                    _ => Vec3::ZERO,
-                };
-                follow.last_frame_position = Some(position);
-                (position, velocity)
-            }
-            TargetMotion::FixedTimestep => match follow.fixed {
-                FixedSamples {
-                    previous: Some(previous),
-                    latest: Some(latest),
-                } => {
-                    // The target moved from `previous` to `latest` over one fixed step, and
-                    // `overstep` seconds of that motion have passed since.
-                    let velocity = (latest - previous) / fixed_time.timestep().as_secs_f32();
-                    (
-                        latest + velocity * fixed_time.overstep().as_secs_f32(),
-                        velocity,
-                    )
-                }
-                FixedSamples {
-                    latest: Some(latest),
-                    ..
-                } => (latest, Vec3::ZERO),
-                _ => {
-                    let Some(position) = world_position(follow.target, &transforms, &globals)
-                    else {
-                        continue;
+        let sample = match world_position(follow.target, &transforms, &globals) {
+            None => None,
+            Some(position) => match follow.motion {
+                TargetMotion::PerFrame => {
+                    let dt = steps.dt(spring.clock());
+                    let velocity = match follow.last_frame_position {
+                        Some(last) if dt > 0.0 => (position - last) / dt,
+                        _ => Vec3::ZERO,
                     };
-                    (position, Vec3::ZERO)
+                    Some((position, velocity))
+                }
+                TargetMotion::FixedTimestep => {
+                    Some(fixed_sample(follow.fixed, &fixed_time).unwrap_or((position, Vec3::ZERO)))
                 }
             },
         };
+        let Some((position, velocity)) = sample else {
+            follow.last_frame_position = None;
+            stop_target(&mut spring);
+            continue;
+        };
+        follow.last_frame_position = Some(position);
         follow.current = Some(position);
         let goal = position + follow.offset;
         // A non-finite target position is refused by the spring (with a warning).
@@ -203,6 +198,46 @@ fn follow_targets(
         if spring.target_velocity() != velocity {
             spring.set_target_velocity(velocity);
         }
+    }
+}
+
+/// Where a target that moves in `FixedUpdate` is this frame, and its velocity, from its last
+/// two fixed-step samples; from one, where it stands.
+fn fixed_sample(samples: FixedSamples, fixed_time: &Time<Fixed>) -> Option<(Vec3, Vec3)> {
+    match samples {
+        FixedSamples {
+            previous: Some(previous),
+            latest: Some(latest),
+        } => {
+            // The target moved from `previous` to `latest` over one fixed step, and `overstep`
+            // seconds of that motion have passed since.
+            let velocity = (latest - previous) / fixed_time.timestep().as_secs_f32();
+            Some((
+                latest + velocity * fixed_time.overstep().as_secs_f32(),
+                velocity,
+            ))
+        }
+        FixedSamples {
+            latest: Some(latest),
+            ..
+        } => Some((latest, Vec3::ZERO)),
+        _ => None,
+    }
+}
+
+/// The spring's target stops moving (its target velocity is zeroed): it comes to rest on its
+/// target and sleeps. Only a moving target is touched, so a resting spring stays asleep.
+fn stop_target(spring: &mut Mut<TranslationSpring>) {
+    if spring.target_velocity() != Vec3::ZERO {
+        spring.set_target_velocity(Vec3::ZERO);
+    }
+}
+
+/// The hook of a [`SpringFollow`] removed: the translation spring it moved no longer follows a
+/// moving target, and comes to rest on its target (or the one set next).
+fn stop_following(mut world: DeferredWorld, context: HookContext) {
+    if let Some(mut spring) = world.get_mut::<TranslationSpring>(context.entity) {
+        stop_target(&mut spring);
     }
 }
 
