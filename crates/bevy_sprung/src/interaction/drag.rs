@@ -10,6 +10,7 @@ use sprung::Spring;
 
 use super::InteractionState;
 use super::velocity::ReleaseVelocity;
+use crate::spring::trigger_if_alive;
 use crate::transform::TranslationSpring;
 #[cfg(feature = "ui")]
 use crate::ui::UiTranslationSpring;
@@ -619,7 +620,14 @@ fn start_drag(event: On<Pointer<DragStart>>, context: DragContext, mut bodies: Q
         );
         return;
     };
-    if drag.state.active.is_some() {
+    // A second pointer does not take an entity another one drags; the same pointer starting
+    // again ends a drag whose end it never heard (its entity was not pickable then) and starts
+    // afresh.
+    if drag
+        .state
+        .active
+        .is_some_and(|active| active.pointer != event.pointer_id)
+    {
         return;
     }
     let space = match moved {
@@ -743,17 +751,20 @@ fn end_drag(
         return;
     };
     let (mut drag, moved, parent, _) = body(item);
-    let (Some(mut moved), Some(active)) = (moved, drag.state.active) else {
+    let Some(active) = drag.state.active else {
         return;
     };
     if active.pointer != event.pointer_id {
         return;
     }
-    if !active.engaged {
-        // A click: nothing was taken, nothing is flung.
-        drag.state.active = None;
+    // The drag ends whatever happened to the entity meanwhile.
+    drag.state.active = None;
+    // A click (nothing was taken), or the spring or its value removed mid-drag: nothing to
+    // fling.
+    let (Some(mut moved), true) = (moved, active.engaged) else {
+        drag.state.path.clear();
         return;
-    }
+    };
     let now = context.now();
     if let Some(position) =
         dragged_position(&drag, active, &context, &event.pointer_location, parent)
@@ -770,15 +781,17 @@ fn end_drag(
     }
     moved.set_spring(drag.release_spring.unwrap_or(active.spring));
     moved.retarget(target, Some(velocity));
-    drag.state.active = None;
     drag.state.path.clear();
-    commands.trigger(DragReleased {
-        entity: event.entity,
-        velocity,
-        projected,
-        target,
-        snapped,
-    });
+    trigger_if_alive(
+        &mut commands,
+        DragReleased {
+            entity: event.entity,
+            velocity,
+            projected,
+            target,
+            snapped,
+        },
+    );
 }
 
 pub(super) fn build(app: &mut App) {
