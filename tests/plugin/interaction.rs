@@ -86,7 +86,7 @@ fn release(app: &mut App, entity: Entity) {
     );
 }
 
-fn drag_start(app: &mut App, entity: Entity, position: Vec2, camera: Entity) {
+pub(crate) fn drag_start(app: &mut App, entity: Entity, position: Vec2, camera: Entity) {
     pointer(
         app,
         entity,
@@ -98,7 +98,7 @@ fn drag_start(app: &mut App, entity: Entity, position: Vec2, camera: Entity) {
     );
 }
 
-fn drag(app: &mut App, entity: Entity, position: Vec2) {
+pub(crate) fn drag(app: &mut App, entity: Entity, position: Vec2) {
     pointer(
         app,
         entity,
@@ -111,7 +111,7 @@ fn drag(app: &mut App, entity: Entity, position: Vec2) {
     );
 }
 
-fn drag_end(app: &mut App, entity: Entity, position: Vec2) {
+pub(crate) fn drag_end(app: &mut App, entity: Entity, position: Vec2) {
     pointer(
         app,
         entity,

@@ -26,3 +26,4 @@ mod sleeping;
 mod soak;
 mod spin;
 mod ui;
+mod world_changes;
