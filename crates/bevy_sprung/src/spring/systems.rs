@@ -77,9 +77,11 @@ pub(crate) fn step_springs<P: SpringProperty>(
     let preference = reduced_motion.map_or(ReducedMotion::Full, |preference| *preference);
     let mut cache = TransitionCache::default();
     if preference.is_reduced() {
-        for (entity, mut config, mut motion, mut component) in &mut springs {
-            // The step reads the configuration and changes it only to apply a velocity change
-            // or to repair it: the spring is not changed by being stepped.
+        // An accessibility setting, not the hot path: spring by spring, those that may skip
+        // frames while hidden too (a reduced motion is cheap, and never waits to be seen).
+        let mut step_reduced = |(entity, mut config, mut motion, mut component): ReducedRow<P>| {
+            // The step reads the configuration and changes it only to apply a velocity
+            // change or to repair it: the spring is not changed by being stepped.
             let config = config.bypass_change_detection();
             let current = P::get(&component);
             let frame = if exempt.contains(entity) {
@@ -93,7 +95,14 @@ pub(crate) fn step_springs<P: SpringProperty>(
             if frame.outcome == Stepped::Settled {
                 put_to_sleep::<P>(&commands, entity);
             }
-        }
+        };
+        springs.iter_mut().for_each(&mut step_reduced);
+        #[cfg(feature = "visibility")]
+        catching_up
+            .iter_mut()
+            .for_each(|(entity, config, motion, component, _)| {
+                step_reduced((entity, config, motion, component));
+            });
         table.finish(count);
         return;
     }
@@ -135,6 +144,15 @@ pub(crate) fn step_springs<P: SpringProperty>(
     }
     table.finish(count);
 }
+
+/// A spring stepped under a reduced-motion preference: its entity, configuration, motion and
+/// property.
+type ReducedRow<'a, P> = (
+    Entity,
+    Mut<'a, PropertySpring<P>>,
+    Mut<'a, SpringMotion<P>>,
+    Mut<'a, <P as SpringProperty>::Component>,
+);
 
 /// [`step_row`] for a spring of a query item (a property on a sparse-set component, whose
 /// columns are not contiguous).
