@@ -326,6 +326,21 @@ impl<P: SpringProperty> SpringMotion<P> {
         self.velocity.into()
     }
 
+    /// Whether the property's `current` value is the one this motion put there: the target
+    /// it snapped to when it came to rest, or what its last step wrote (a spring put to sleep
+    /// by hand mid-flight). Something else wrote any other value.
+    #[inline]
+    pub(crate) fn holds(&self, current: ValueOf<P>) -> bool {
+        let zero = OffsetOf::<P>::ZERO;
+        if self.offset.offset == zero && self.offset.remainder == zero {
+            // Snapped: the target itself was written (not `at_offset(target, 0)`, which a
+            // space may clamp or re-encode).
+            P::Space::same(current, self.active_target)
+        } else {
+            P::Space::is_written(current, self.active_target, self.offset)
+        }
+    }
+
     /// The ticket of the spring's slot in its property's transition table; from
     /// [`TransitionTable::NO_TICKET`] up, it has none.
     #[inline]

@@ -512,11 +512,14 @@ fn put_to_sleep<P: SpringProperty>(commands: &ParallelCommands, entity: Entity) 
     });
 }
 
-/// Wakes sleeping springs on property `P` whose target changed or that were kicked.
+/// Wakes sleeping springs on property `P` whose target changed or that were kicked, and those
+/// whose property something else moved away from where they rest (a teleport, a value written
+/// by hand): sleeping saves work, and changes nothing a spring does.
 ///
-/// Only springs changed since the last run are looked at. Their change ticks are scanned a
-/// table column at a time, in blocks tested without a branch per spring: a scene of sleeping
-/// springs costs well under one instruction per spring per frame.
+/// Only springs whose configuration or property changed since the last run are looked at.
+/// Their change ticks are scanned a table column at a time, in blocks tested without a branch
+/// per spring ([`for_each_changed_row`]): a scene of sleeping springs costs about one
+/// instruction per spring per frame.
 pub(crate) fn wake_springs<P: SpringProperty>(
     mut commands: Commands,
     mut tracker: Option<ResMut<SettleTracker>>,
@@ -525,61 +528,107 @@ pub(crate) fn wake_springs<P: SpringProperty>(
             Entity,
             Ref<PropertySpring<P>>,
             &SpringMotion<P>,
+            Ref<P::Component>,
             Has<SpringGroup>,
         ),
         With<SpringAsleep<P>>,
     >,
 ) {
-    let mut wake = |entity: Entity, spring: &PropertySpring<P>, motion, grouped: bool| {
-        if spring.wants_to_move(motion) {
-            commands.entity(entity).try_remove::<SpringAsleep<P>>();
-            // Woken (perhaps to settle again this very frame): its group hears of it.
-            if grouped && let Some(tracker) = tracker.as_mut() {
-                tracker.moving(entity);
-            }
+    let mut wake = |entity: Entity, grouped: bool| {
+        commands.entity(entity).try_remove::<SpringAsleep<P>>();
+        // Woken (perhaps to settle again this very frame): its group hears of it.
+        if grouped && let Some(tracker) = tracker.as_mut() {
+            tracker.moving(entity);
         }
     };
     let Ok(tables) = asleep.contiguous_iter() else {
         // Not reached (the components are in tables): the same, spring by spring.
-        for (entity, spring, motion, grouped) in &asleep {
-            if spring.is_changed() {
-                wake(entity, &spring, motion, grouped);
+        for (entity, spring, motion, component, grouped) in &asleep {
+            let changes = RowChanges {
+                spring: spring.is_changed(),
+                property: component.is_changed(),
+            };
+            if changes.wake(&spring, motion, &component) {
+                wake(entity, grouped);
             }
         }
         return;
     };
-    for (entities, springs, motions, grouped) in tables {
-        let (springs, ticks) = ContiguousRef::split(springs);
-        let (last_run, this_run) = (ticks.last_run(), ticks.this_run());
-        // Two levels: a scene at rest settles each long stretch with one test, and a stretch
-        // that holds a change is looked into block by block, so that one retarget among many
-        // sleeping springs costs a few short blocks rather than the whole stretch row by row.
-        let stretches = ticks
-            .changed()
-            .chunks(WAKE_STRETCH)
-            .zip(
-                springs
-                    .chunks(WAKE_STRETCH)
-                    .zip(motions.chunks(WAKE_STRETCH)),
-            )
-            .zip(entities.chunks(WAKE_STRETCH));
-        for ((changed, (springs, motions)), entities) in stretches {
-            if !any_newer(changed, last_run, this_run) {
-                continue;
+    for (entities, springs, motions, components, grouped) in tables {
+        let (springs, spring_ticks) = ContiguousRef::split(springs);
+        let (components, component_ticks) = ContiguousRef::split(components);
+        let runs = (spring_ticks.last_run(), spring_ticks.this_run());
+        let ticks = (spring_ticks.changed(), component_ticks.changed());
+        for_each_changed_row(ticks, runs, |row, changes| {
+            if changes.wake(&springs[row], &motions[row], &components[row]) {
+                wake(entities[row], grouped);
             }
-            let blocks = changed
-                .chunks(WAKE_BLOCK)
-                .zip(springs.chunks(WAKE_BLOCK).zip(motions.chunks(WAKE_BLOCK)))
-                .zip(entities.chunks(WAKE_BLOCK));
-            for ((changed, (springs, motions)), entities) in blocks {
-                if !any_newer(changed, last_run, this_run) {
-                    continue;
-                }
-                let rows = changed.iter().zip(springs).zip(motions).zip(entities);
-                for (((tick, spring), motion), &entity) in rows {
-                    if tick.is_newer_than(last_run, this_run) {
-                        wake(entity, spring, motion, grouped);
-                    }
+        });
+    }
+}
+
+/// What changed in one sleeping spring's row since the waking system last ran.
+#[derive(Clone, Copy, Debug, Default)]
+struct RowChanges {
+    /// The spring's configuration (a retarget, a kick, an edit).
+    spring: bool,
+    /// Its property (written by something else, or by the spring's own last step).
+    property: bool,
+}
+
+impl RowChanges {
+    /// Whether the sleeping spring with `motion` wakes: its configuration asks it to move, or
+    /// something else wrote its property. A configuration marked changed is also how a spring
+    /// whose entity was disabled says it is back (see `touch_on_return`): its property may have
+    /// been written while the systems did not see it, so it is compared too.
+    #[inline]
+    fn wake<P: SpringProperty>(
+        self,
+        spring: &PropertySpring<P>,
+        motion: &SpringMotion<P>,
+        component: &P::Component,
+    ) -> bool {
+        let written = || !motion.holds(P::get(component));
+        (self.spring && (spring.wants_to_move(motion) || written())) || (self.property && written())
+    }
+}
+
+/// Calls `visit` with the index of every row whose tick in either column (the springs', the
+/// properties') is newer than `last_run`, and which of the two are. Two levels: a scene at rest
+/// settles each long stretch with one test of both columns, and a stretch that holds a change
+/// is looked into block by block, so that one retarget among many sleeping springs costs a few
+/// short blocks rather than the whole stretch row by row.
+fn for_each_changed_row(
+    (springs, properties): (&[Tick], &[Tick]),
+    (last_run, this_run): (Tick, Tick),
+    mut visit: impl FnMut(usize, RowChanges),
+) {
+    let rows = springs.len().min(properties.len());
+    let changed_in = |range: core::ops::Range<usize>| {
+        let (spring, property) = any_newer_in_each(
+            [&springs[range.clone()], &properties[range]],
+            last_run,
+            this_run,
+        );
+        RowChanges { spring, property }
+    };
+    for stretch in (0..rows).step_by(WAKE_STRETCH) {
+        let stretch_end = (stretch + WAKE_STRETCH).min(rows);
+        let in_stretch = changed_in(stretch..stretch_end);
+        if !(in_stretch.spring || in_stretch.property) {
+            continue;
+        }
+        for block in (stretch..stretch_end).step_by(WAKE_BLOCK) {
+            let block_end = (block + WAKE_BLOCK).min(stretch_end);
+            let in_block = changed_in(block..block_end);
+            for row in block..block_end {
+                let changes = RowChanges {
+                    spring: in_block.spring && springs[row].is_newer_than(last_run, this_run),
+                    property: in_block.property
+                        && properties[row].is_newer_than(last_run, this_run),
+                };
+                if changes.spring || changes.property {
+                    visit(row, changes);
                 }
             }
         }
