@@ -551,6 +551,26 @@ impl<P: SpringProperty> SpringMotion<P> {
         crate::space::is_within_rest(squared, self.rest_squared)
     }
 
+    /// The value at `offset` from `target`, and the offset: where the value would leave `f32`
+    /// (a target near `f32::MAX` and an offset past it), the offset is halved until it fits —
+    /// the spring meets the edge of `f32` as a wall and comes back from there. Exact halvings,
+    /// at most a few for any finite state; the usual step's states never get there (its limit
+    /// keeps the offset far below a target's `ulp` at `f32::MAX`).
+    fn within_range(
+        target: ValueOf<P>,
+        mut offset: Carried<OffsetOf<P>>,
+    ) -> (ValueOf<P>, Carried<OffsetOf<P>>) {
+        for _ in 0..300 {
+            let value = P::Space::at_carried(target, offset);
+            if P::Space::is_valid(value) {
+                return (value, offset);
+            }
+            offset = Carried::new(offset.offset * 0.5);
+        }
+        warn_once!("bevy_sprung: a spring's value left f32; it is put on its target");
+        (target, Carried::new(OffsetOf::<P>::ZERO))
+    }
+
     /// The end of a step to `(offset, velocity)` with squared lengths `squared`: at rest (toward
     /// a target that does not move) the spring snaps onto its target and settles; the state is
     /// stored, and the new value returned if it differs from `current`.
@@ -569,12 +589,8 @@ impl<P: SpringProperty> SpringMotion<P> {
                 // Snapping is what makes sleeping exact: nothing moves until the target changes.
                 (target, Carried::new(zero), zero, Stepped::Settled)
             } else {
-                (
-                    P::Space::at_carried(target, offset),
-                    offset,
-                    velocity,
-                    Stepped::Moving,
-                )
+                let (value, offset) = Self::within_range(target, offset);
+                (value, offset, velocity, Stepped::Moving)
             };
         self.offset = offset;
         self.velocity = velocity;
