@@ -285,7 +285,12 @@ fn take_off(applied: Applied, transform: &mut Transform) {
         transform.rotation = base.1;
     } else {
         let tilt = base.1.inverse() * shaken.1;
-        transform.rotation = (transform.rotation * tilt.inverse()).normalize();
+        let rotation = (transform.rotation * tilt.inverse()).normalize();
+        // A tilt that is not a rotation (the shake was added to one that is not) cannot be
+        // taken off: what was written is kept.
+        if rotation.is_finite() {
+            transform.rotation = rotation;
+        }
     }
 }
 
@@ -310,12 +315,18 @@ pub(super) fn add_shakes(time: Res<Time>, mut shakes: Query<(&mut Shake, &mut Tr
             continue;
         }
         let base = (transform.translation, transform.rotation);
-        transform.translation = base.0 + base.1 * offset;
-        transform.rotation = base.1 * tilt;
-        shake.motion.applied = Some(Applied {
-            base,
-            shaken: (transform.translation, transform.rotation),
-        });
+        let shaken = (base.0 + base.1 * offset, base.1 * tilt);
+        // A rotation that is not a unit quaternion (written by something else) can carry the
+        // offset out of `f32`: a shake is never what makes a `Transform` non-finite.
+        if !(shaken.0.is_finite() && shaken.1.is_finite()) {
+            warn_once!(
+                "bevy_sprung: a Shake on a Transform whose rotation is not a unit quaternion; not \
+                 applied"
+            );
+            continue;
+        }
+        (transform.translation, transform.rotation) = shaken;
+        shake.motion.applied = Some(Applied { base, shaken });
     }
 }
 
