@@ -97,9 +97,9 @@ fn a_sleeping_spring_retargeted_while_disabled_wakes() {
     assert_eq!(translation(&app, entity), new_target);
 }
 
-/// A moving spring put to sleep by hand (its `SpringAsleep` inserted, as a scene could), its
-/// value written meanwhile, and woken by hand (the component removed): it is sprung on from
-/// where the value was put, with the velocity it had.
+/// A moving spring put to sleep by hand (its `SpringAsleep` inserted, as a scene could) holds
+/// still; its value written meanwhile wakes it, and it is sprung on from where the value was
+/// put, with the velocity it had.
 #[test]
 fn a_spring_put_to_sleep_by_hand_takes_up_what_was_written_meanwhile() {
     let mut app = app(60);
@@ -107,12 +107,37 @@ fn a_spring_put_to_sleep_by_hand_takes_up_what_was_written_meanwhile() {
     let target = Vec3::new(3.0, 2.0, 4.0);
     let entity = springs(&mut app, spring, target, 10);
     let velocity = motion::<Translation>(&app, entity).velocity();
+    let held = translation(&app, entity);
+    app.world_mut()
+        .entity_mut(entity)
+        .insert(SpringAsleep::<Translation>::default());
+    run(&mut app, 2);
+    assert_eq!(translation(&app, entity), held, "asleep, it does not move");
+    assert!(asleep::<Translation>(&app, entity));
     let put = Vec3::new(2.5, 0.5, 1.5);
-    while_away::<SpringAsleep<Translation>>(&mut app, entity, |mut entity| {
-        entity.get_mut::<Transform>().unwrap().translation = put;
-    });
-    // Removed, and no frame since: what the two frames asleep left.
-    assert_eq!(translation(&app, entity), put, "asleep, it does not move");
+    app.world_mut()
+        .get_mut::<Transform>(entity)
+        .unwrap()
+        .translation = put;
     app.update();
+    assert!(!asleep::<Translation>(&app, entity), "the write wakes it");
     assert_stepped_from(&app, entity, spring, (put, velocity), target);
+}
+
+/// A sleeping spring whose property was written while its entity was disabled (its component
+/// removed and inserted again, here) springs back to its target once enabled.
+#[test]
+fn a_sleeping_spring_whose_value_was_written_while_disabled_springs_back() {
+    let mut app = app(60);
+    let target = Vec3::new(3.0, 2.0, 4.0);
+    let entity = springs(&mut app, Spring::snappy(), target, 600);
+    assert!(asleep::<Translation>(&app, entity));
+    while_away::<Disabled>(&mut app, entity, |mut entity| {
+        entity.remove::<Transform>();
+        entity.insert(Transform::from_xyz(-1.0, 0.0, 0.0));
+    });
+    app.update();
+    assert!(!asleep::<Translation>(&app, entity));
+    run(&mut app, 600);
+    assert_eq!(translation(&app, entity), target);
 }

@@ -395,8 +395,13 @@ fn a_drag_ends_on_release_after_its_spring_was_removed() {
             ))
             .id();
         run(&mut app, 2);
-        drag_start(&mut app, card, Vec2::new(100.0, 100.0), Entity::PLACEHOLDER);
-        drag(&mut app, card, Vec2::new(120.0, 100.0));
+        drag_start(
+            app.world_mut(),
+            card,
+            Vec2::new(100.0, 100.0),
+            Entity::PLACEHOLDER,
+        );
+        drag(app.world_mut(), card, Vec2::new(120.0, 100.0));
         run(&mut app, 1);
         assert_eq!(ui_position(&app, card), Vec2::new(20.0, 0.0));
         if remove_value {
@@ -407,7 +412,7 @@ fn a_drag_ends_on_release_after_its_spring_was_removed() {
                 .remove::<UiTranslationSpring>();
         }
         run(&mut app, 1);
-        drag_end(&mut app, card, Vec2::new(120.0, 100.0));
+        drag_end(app.world_mut(), card, Vec2::new(120.0, 100.0));
         run(&mut app, 1);
         if remove_value {
             app.world_mut()
@@ -427,8 +432,13 @@ fn a_drag_ends_on_release_after_its_spring_was_removed() {
             "remove value: {remove_value}"
         );
         // A new 10 px drag moves the card 10 px.
-        drag_start(&mut app, card, Vec2::new(400.0, 300.0), Entity::PLACEHOLDER);
-        drag(&mut app, card, Vec2::new(410.0, 300.0));
+        drag_start(
+            app.world_mut(),
+            card,
+            Vec2::new(400.0, 300.0),
+            Entity::PLACEHOLDER,
+        );
+        drag(app.world_mut(), card, Vec2::new(410.0, 300.0));
         run(&mut app, 1);
         assert_eq!(
             ui_position(&app, card),
@@ -593,4 +603,131 @@ fn a_spring_spawned_toward_a_non_finite_target_later_moves_by_the_exact_step() {
         app.world().get::<Transform>(entity).unwrap().scale,
         Vec3::splat(2.0)
     );
+}
+
+/// A sleeping spring whose property something else moves (a teleport, a value set by hand, a
+/// NaN) wakes and springs back to its target: sleeping saves work and changes nothing a spring
+/// does. Its own value written back does not wake it, nor does a write to another field of the
+/// same component.
+#[test]
+fn a_sleeping_spring_whose_property_is_moved_springs_back() {
+    for moved in [Vec3::new(40.0, -3.0, 2.0), Vec3::NAN] {
+        let mut app = app(60);
+        let target = Vec3::new(10.0, 0.0, 0.0);
+        let entity = spawn_translation(&mut app, Spring::snappy(), Vec3::ZERO, target);
+        run(&mut app, 120);
+        assert!(asleep::<Translation>(&app, entity));
+        let mut transform = app.world_mut().get_mut::<Transform>(entity).unwrap();
+        transform.translation = target;
+        transform.scale = Vec3::splat(2.0);
+        run(&mut app, 2);
+        assert!(
+            asleep::<Translation>(&app, entity),
+            "not moved: still asleep"
+        );
+        app.world_mut()
+            .get_mut::<Transform>(entity)
+            .unwrap()
+            .translation = moved;
+        app.update();
+        if moved.is_finite() {
+            assert!(!asleep::<Translation>(&app, entity), "{moved}: woken");
+            assert_stepped_from(&app, entity, Spring::snappy(), (moved, Vec3::ZERO), target);
+        } else {
+            // Restored from the spring's own state (at rest: the target), at once.
+            assert_eq!(translation(&app, entity), target);
+        }
+        run(&mut app, 120);
+        assert!(asleep::<Translation>(&app, entity));
+        assert_eq!(translation(&app, entity), target);
+    }
+}
+
+/// A shake on a `Transform` whose rotation something else made huge and not a unit quaternion
+/// is not applied, rather than writing a NaN translation.
+#[test]
+fn a_shake_never_writes_nan_over_a_rotation_that_is_not_a_unit_quaternion() {
+    let mut app = app(60);
+    let mut shake = Shake::new(7).with_max_translation(Vec3::splat(5.0));
+    shake.add_trauma(1.0);
+    let entity = app
+        .world_mut()
+        .spawn((
+            Transform::from_rotation(Quat::from_xyzw(236.5, -32.8, 421.0, -3.4e38)),
+            shake,
+        ))
+        .id();
+    for _ in 0..30 {
+        app.update();
+        assert!(translation(&app, entity).is_finite());
+    }
+}
+
+/// Springs that may skip frames while hidden take reduced motion as every spring does: a hidden
+/// one snaps under `Snap` rather than freezing until it is seen.
+#[test]
+fn hidden_springs_follow_reduced_motion() {
+    let mut app = app(60);
+    app.insert_resource(ReducedMotion::Snap);
+    let target = Vec3::new(4.0, 5.0, 6.0);
+    let entity = spawn_translation(&mut app, Spring::molasses(), Vec3::ZERO, target);
+    app.world_mut().entity_mut(entity).insert((
+        CatchUpWhenHidden,
+        bevy::camera::visibility::ViewVisibility::HIDDEN,
+    ));
+    run(&mut app, 3);
+    assert_eq!(translation(&app, entity), target);
+    assert!(asleep::<Translation>(&app, entity));
+}
+
+/// A shake's tilt, added to a rotation that was not one (zero), is not "taken off" a rotation
+/// written since: no NaN, what was written is kept.
+#[test]
+fn a_shake_never_takes_a_nan_off_a_written_rotation() {
+    let mut app = app(60);
+    let mut shake = Shake::new(7).with_max_rotation(Vec3::splat(0.1));
+    shake.add_trauma(1.0);
+    let entity = app
+        .world_mut()
+        .spawn((
+            Transform::from_rotation(Quat::from_xyzw(0.0, 0.0, 0.0, 0.0)),
+            shake,
+        ))
+        .id();
+    run(&mut app, 3);
+    let written = Quat::from_rotation_y(0.5);
+    app.world_mut()
+        .get_mut::<Transform>(entity)
+        .unwrap()
+        .rotation = written;
+    for _ in 0..10 {
+        app.update();
+        let rotation = app.world().get::<Transform>(entity).unwrap().rotation;
+        assert!(rotation.is_finite(), "{rotation}");
+    }
+}
+
+/// A spring toward a target at the edge of `f32` (a `Node` width of `3.4e38` px) that
+/// overshoots past it meets the edge as a wall: the value stays finite and arrives.
+#[test]
+fn a_target_at_the_edge_of_f32_is_reached_without_leaving_it() {
+    let mut app = app(60);
+    let target = Val2::px(f32::MAX, 10.0);
+    let entity = app
+        .world_mut()
+        .spawn((
+            Node::default(),
+            NodeSizeSpring::new(Spring::wobbly(), target).with_velocity(Vec2::new(f32::MAX, 0.0)),
+        ))
+        .id();
+    for _ in 0..600 {
+        app.update();
+        let node = app.world().get::<Node>(entity).unwrap();
+        let (Val::Px(width) | Val::Percent(width)) = node.width else {
+            continue;
+        };
+        assert!(width.is_finite(), "{:?}", node.width);
+    }
+    let node = app.world().get::<Node>(entity).unwrap();
+    assert_eq!(Val2::new(node.width, node.height), target);
 }
