@@ -75,13 +75,13 @@ fn non_finite_targets_and_impulses_are_refused_and_the_state_kept() {
 
 /// Writes `value` into the named field of the entity's component `C` (a translation spring or
 /// its motion) by reflection, as an inspector or a scene would: the setters are bypassed.
-fn write_by_reflection<C: Component<Mutability = Mutable> + Reflect>(
-    app: &mut App,
+pub(crate) fn write_by_reflection<C: Component<Mutability = Mutable> + Reflect>(
+    world: &mut World,
     entity: Entity,
     path: &[&str],
     value: &dyn PartialReflect,
 ) {
-    let mut spring = app.world_mut().get_mut::<C>(entity).unwrap();
+    let mut spring = world.get_mut::<C>(entity).unwrap();
     let mut field = spring
         .reflect_mut()
         .as_struct()
@@ -119,7 +119,7 @@ fn a_nan_target_written_through_reflection_is_refused_by_the_step() {
     let mut app = app(60);
     let entity = spawn_translation(&mut app, Spring::wobbly(), Vec3::ZERO, Vec3::X * 10.0);
     run(&mut app, 5);
-    write_by_reflection::<TranslationSpring>(&mut app, entity, &["target"], &Vec3::NAN);
+    write_by_reflection::<TranslationSpring>(app.world_mut(), entity, &["target"], &Vec3::NAN);
     assert!(finite_until_rest(&mut app, entity, Vec3::X * 10.0));
     assert_eq!(translation_spring(&app, entity).target(), Vec3::X * 10.0);
 }
@@ -132,7 +132,12 @@ fn invalid_parameters_written_through_reflection_are_replaced_by_the_last_valid_
     let entity = spawn_translation(&mut app, Spring::wobbly(), Vec3::ZERO, Vec3::X * 10.0);
     run(&mut app, 5);
     let held = translation(&app, entity);
-    write_by_reflection::<TranslationSpring>(&mut app, entity, &["spring", "mass"], &-1.0_f32);
+    write_by_reflection::<TranslationSpring>(
+        app.world_mut(),
+        entity,
+        &["spring", "mass"],
+        &-1.0_f32,
+    );
     app.update();
     assert_ne!(translation(&app, entity), held, "the spring froze");
     assert_eq!(*translation_spring(&app, entity).spring(), Spring::wobbly());
@@ -147,7 +152,12 @@ fn a_non_finite_velocity_written_through_reflection_is_reset() {
         let mut app = app(60);
         let entity = spawn_translation(&mut app, Spring::snappy(), Vec3::ZERO, Vec3::X * 10.0);
         run(&mut app, 5);
-        write_by_reflection::<SpringMotion<Translation>>(&mut app, entity, &["velocity"], &bad);
+        write_by_reflection::<SpringMotion<Translation>>(
+            app.world_mut(),
+            entity,
+            &["velocity"],
+            &bad,
+        );
         assert!(finite_until_rest(&mut app, entity, Vec3::X * 10.0), "{bad}");
     }
 }

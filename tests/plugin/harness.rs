@@ -129,3 +129,43 @@ pub(crate) fn assert_move_alike(app: &mut App, (a, b): (Entity, Entity), frames:
 pub(crate) fn motion<P: SpringProperty>(app: &App, entity: Entity) -> SpringMotion<P> {
     *app.world().get::<SpringMotion<P>>(entity).unwrap()
 }
+
+/// A small, seeded generator (`SplitMix64`): the randomized tests are deterministic.
+pub(crate) struct Random(pub(crate) u64);
+
+impl Random {
+    pub(crate) fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `[0, 1)`.
+    pub(crate) fn unit(&mut self) -> f32 {
+        #[expect(clippy::cast_precision_loss, reason = "24 random bits")]
+        let unit = (self.next() >> 40) as f32 / (1_u32 << 24) as f32;
+        unit
+    }
+
+    /// Uniform in `[-scale, scale)`.
+    pub(crate) fn symmetric(&mut self, scale: f32) -> f32 {
+        scale * (2.0 * self.unit() - 1.0)
+    }
+
+    /// Uniform in `0..n` (`n > 0`).
+    pub(crate) fn below(&mut self, n: usize) -> usize {
+        usize::try_from(self.next() % n as u64).unwrap()
+    }
+
+    /// True with probability `p`.
+    pub(crate) fn chance(&mut self, p: f32) -> bool {
+        self.unit() < p
+    }
+
+    /// One of `items`, uniformly.
+    pub(crate) fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        items[self.below(items.len())]
+    }
+}

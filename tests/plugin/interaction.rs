@@ -36,12 +36,12 @@ fn hit(camera: Entity) -> HitData {
 
 /// Triggers pointer event `event` on `entity` with the mouse at `position`.
 fn pointer<E: core::fmt::Debug + Clone + Reflect>(
-    app: &mut App,
+    world: &mut World,
     entity: Entity,
     position: Vec2,
     event: E,
 ) {
-    app.world_mut().trigger(Pointer::new(
+    world.trigger(Pointer::new(
         PointerId::Mouse,
         location(position),
         event,
@@ -49,9 +49,9 @@ fn pointer<E: core::fmt::Debug + Clone + Reflect>(
     ));
 }
 
-fn enter(app: &mut App, entity: Entity) {
+pub(crate) fn enter(world: &mut World, entity: Entity) {
     pointer(
-        app,
+        world,
         entity,
         Vec2::ZERO,
         Enter {
@@ -61,9 +61,9 @@ fn enter(app: &mut App, entity: Entity) {
     );
 }
 
-fn press(app: &mut App, entity: Entity) {
+pub(crate) fn press(world: &mut World, entity: Entity) {
     pointer(
-        app,
+        world,
         entity,
         Vec2::ZERO,
         Press {
@@ -74,9 +74,9 @@ fn press(app: &mut App, entity: Entity) {
     );
 }
 
-fn release(app: &mut App, entity: Entity) {
+pub(crate) fn release(world: &mut World, entity: Entity) {
     pointer(
-        app,
+        world,
         entity,
         Vec2::ZERO,
         Release {
@@ -86,9 +86,21 @@ fn release(app: &mut App, entity: Entity) {
     );
 }
 
-pub(crate) fn drag_start(app: &mut App, entity: Entity, position: Vec2, camera: Entity) {
+pub(crate) fn leave(world: &mut World, entity: Entity) {
     pointer(
-        app,
+        world,
+        entity,
+        Vec2::ZERO,
+        Leave {
+            hit: hit(Entity::PLACEHOLDER),
+            was_in_bounds: true,
+        },
+    );
+}
+
+pub(crate) fn drag_start(world: &mut World, entity: Entity, position: Vec2, camera: Entity) {
+    pointer(
+        world,
         entity,
         position,
         DragStart {
@@ -98,9 +110,9 @@ pub(crate) fn drag_start(app: &mut App, entity: Entity, position: Vec2, camera: 
     );
 }
 
-pub(crate) fn drag(app: &mut App, entity: Entity, position: Vec2) {
+pub(crate) fn drag(world: &mut World, entity: Entity, position: Vec2) {
     pointer(
-        app,
+        world,
         entity,
         position,
         Drag {
@@ -111,9 +123,9 @@ pub(crate) fn drag(app: &mut App, entity: Entity, position: Vec2) {
     );
 }
 
-pub(crate) fn drag_end(app: &mut App, entity: Entity, position: Vec2) {
+pub(crate) fn drag_end(world: &mut World, entity: Entity, position: Vec2) {
     pointer(
-        app,
+        world,
         entity,
         position,
         DragEnd {
@@ -122,7 +134,7 @@ pub(crate) fn drag_end(app: &mut App, entity: Entity, position: Vec2) {
         },
     );
     // The release's commands (its event) land now, before the next frame steps the spring.
-    app.world_mut().flush();
+    world.flush();
 }
 
 fn state(app: &App, entity: Entity) -> InteractionState {
@@ -158,26 +170,26 @@ fn states_map_to_targets() {
     let button = spawn_button(&mut app);
     run(&mut app, 2);
     assert_eq!(state(&app, button), InteractionState::Idle);
-    enter(&mut app, button);
+    enter(app.world_mut(), button);
     run(&mut app, 1);
     assert_eq!(state(&app, button), InteractionState::Hovered);
     assert_eq!(scale_target(&app, button), HOVERED);
-    press(&mut app, button);
+    press(app.world_mut(), button);
     run(&mut app, 1);
     assert_eq!(state(&app, button), InteractionState::Pressed);
     assert_eq!(scale_target(&app, button), PRESSED);
-    drag_start(&mut app, button, Vec2::ZERO, Entity::PLACEHOLDER);
+    drag_start(app.world_mut(), button, Vec2::ZERO, Entity::PLACEHOLDER);
     run(&mut app, 1);
     assert_eq!(state(&app, button), InteractionState::Dragged);
     assert_eq!(scale_target(&app, button), PRESSED);
-    drag_end(&mut app, button, Vec2::ZERO);
+    drag_end(app.world_mut(), button, Vec2::ZERO);
     run(&mut app, 1);
     assert_eq!(state(&app, button), InteractionState::Hovered);
     assert_eq!(scale_target(&app, button), HOVERED);
-    press(&mut app, button);
-    release(&mut app, button);
+    press(app.world_mut(), button);
+    release(app.world_mut(), button);
     pointer(
-        &mut app,
+        app.world_mut(),
         button,
         Vec2::ZERO,
         Leave {
@@ -201,7 +213,7 @@ fn states_map_to_targets() {
     app.world_mut()
         .entity_mut(button)
         .insert(InteractionDisabled);
-    enter(&mut app, button);
+    enter(app.world_mut(), button);
     run(&mut app, 1);
     assert_eq!(state(&app, button), InteractionState::Disabled);
     assert_eq!(scale_target(&app, button), DISABLED);
@@ -219,8 +231,8 @@ fn events_reach_only_entities_that_opted_in() {
     let mut app = app(60);
     let plain = app.world_mut().spawn(Transform::default()).id();
     run(&mut app, 1);
-    enter(&mut app, plain);
-    press(&mut app, plain);
+    enter(app.world_mut(), plain);
+    press(app.world_mut(), plain);
     run(&mut app, 1);
     assert!(app.world().get::<InteractionState>(plain).is_none());
 }
@@ -232,9 +244,9 @@ fn state_changes_keep_the_velocity() {
     let mut app = app(60);
     let button = spawn_button(&mut app);
     run(&mut app, 2);
-    enter(&mut app, button);
+    enter(app.world_mut(), button);
     run(&mut app, 20);
-    press(&mut app, button);
+    press(app.world_mut(), button);
     run(&mut app, 4);
     let spring = *app.world().get::<ScaleSpring>(button).unwrap();
     let (x, v) = (
@@ -242,7 +254,7 @@ fn state_changes_keep_the_velocity() {
         motion::<Scale>(&app, button).velocity().x,
     );
     assert!(v.abs() > 0.1, "still moving: {v}");
-    release(&mut app, button);
+    release(app.world_mut(), button);
     run(&mut app, 1);
     let after = app.world().get::<Transform>(button).unwrap().scale.x;
     let exact = sprung::Spring::<f64>::from(*spring.spring())
@@ -288,14 +300,14 @@ fn ui_position(app: &App, entity: Entity) -> Vec2 {
 
 /// Drags `entity` from `from` by `step` per frame for `frames` frames and lets go one step on.
 fn throw(app: &mut App, entity: Entity, from: Vec2, step: Vec2, frames: u32) {
-    drag_start(app, entity, from, Entity::PLACEHOLDER);
-    drag(app, entity, from);
+    drag_start(app.world_mut(), entity, from, Entity::PLACEHOLDER);
+    drag(app.world_mut(), entity, from);
     run(app, 1);
     for i in 1..=frames {
-        drag(app, entity, from + step * i as f32);
+        drag(app.world_mut(), entity, from + step * i as f32);
         run(app, 1);
     }
-    drag_end(app, entity, from + step * (frames + 1) as f32);
+    drag_end(app.world_mut(), entity, from + step * (frames + 1) as f32);
 }
 
 /// Glued to the pointer while dragged (the spring does not pull it back), flung on release with
@@ -313,11 +325,20 @@ fn fling_snaps_to_the_slot_nearest_the_throw() {
         );
         run(&mut app, 2);
         let step = Vec2::new(speed / 60.0, 0.0);
-        drag_start(&mut app, card, Vec2::new(100.0, 100.0), Entity::PLACEHOLDER);
-        drag(&mut app, card, Vec2::new(100.0, 100.0));
+        drag_start(
+            app.world_mut(),
+            card,
+            Vec2::new(100.0, 100.0),
+            Entity::PLACEHOLDER,
+        );
+        drag(app.world_mut(), card, Vec2::new(100.0, 100.0));
         run(&mut app, 1);
         for i in 1..=12 {
-            drag(&mut app, card, Vec2::new(100.0, 100.0) + step * i as f32);
+            drag(
+                app.world_mut(),
+                card,
+                Vec2::new(100.0, 100.0) + step * i as f32,
+            );
             run(&mut app, 1);
             // Exactly where the pointer put it, frame after frame.
             assert_eq!(ui_position(&app, card), step * i as f32);
@@ -331,10 +352,14 @@ fn fling_snaps_to_the_slot_nearest_the_throw() {
         );
         // Moving again, then let go while moving.
         for i in 13..=20 {
-            drag(&mut app, card, Vec2::new(100.0, 100.0) + step * i as f32);
+            drag(
+                app.world_mut(),
+                card,
+                Vec2::new(100.0, 100.0) + step * i as f32,
+            );
             run(&mut app, 1);
         }
-        drag_end(&mut app, card, Vec2::new(100.0, 100.0) + step * 21.0);
+        drag_end(app.world_mut(), card, Vec2::new(100.0, 100.0) + step * 21.0);
         let released = app.world().resource::<Released>().0[0];
         assert!(
             (released.velocity.x - speed).abs() < 0.01 * speed && released.velocity.y.abs() < 1.0,
@@ -388,13 +413,13 @@ fn far_throws_go_home_and_stopped_drags_do_not_fling() {
     assert_eq!(ui_position(&app, card), Vec2::ZERO);
 
     // Dragged to the slot, held still for 0.2 s, released: no fling, snapped.
-    drag_start(&mut app, card, Vec2::ZERO, Entity::PLACEHOLDER);
+    drag_start(app.world_mut(), card, Vec2::ZERO, Entity::PLACEHOLDER);
     for i in 1..=10 {
-        drag(&mut app, card, Vec2::new(29.0 * i as f32, 0.0));
+        drag(app.world_mut(), card, Vec2::new(29.0 * i as f32, 0.0));
         run(&mut app, 1);
     }
     run(&mut app, 12);
-    drag_end(&mut app, card, Vec2::new(290.0, 0.0));
+    drag_end(app.world_mut(), card, Vec2::new(290.0, 0.0));
     let released = app.world().resource::<Released>().0[1];
     assert_eq!(released.velocity, Vec3::ZERO);
     assert_eq!(released.snapped, Some(0));
@@ -418,10 +443,10 @@ fn rubber_band_bounds() {
             .with_throw(0.0),
     );
     run(&mut app, 2);
-    drag_start(&mut app, card, Vec2::ZERO, Entity::PLACEHOLDER);
+    drag_start(app.world_mut(), card, Vec2::ZERO, Entity::PLACEHOLDER);
     let mut last = 0.0;
     for i in 1..=40 {
-        drag(&mut app, card, Vec2::new(10.0 * i as f32, 0.0));
+        drag(app.world_mut(), card, Vec2::new(10.0 * i as f32, 0.0));
         run(&mut app, 1);
         let x = ui_position(&app, card).x;
         assert!(x >= last, "monotonic");
@@ -432,7 +457,7 @@ fn rubber_band_bounds() {
         }
         last = x;
     }
-    drag_end(&mut app, card, Vec2::new(400.0, 0.0));
+    drag_end(app.world_mut(), card, Vec2::new(400.0, 0.0));
     run(&mut app, 300);
     assert_eq!(ui_position(&app, card), Vec2::new(100.0, 0.0));
 }
@@ -472,13 +497,13 @@ fn world_space_drag_through_a_camera() {
         .id();
     run(&mut app, 2);
     // Grabbed 5 px right of its centre (screen (415, 280) is world (15, 20)).
-    drag_start(&mut app, card, Vec2::new(415.0, 280.0), camera);
-    drag(&mut app, card, Vec2::new(415.0, 280.0));
+    drag_start(app.world_mut(), card, Vec2::new(415.0, 280.0), camera);
+    drag(app.world_mut(), card, Vec2::new(415.0, 280.0));
     run(&mut app, 1);
     for i in 1..=10 {
         // Right and up on screen: +x, −y in pixels is +x, +y in the world.
         drag(
-            &mut app,
+            app.world_mut(),
             card,
             Vec2::new(415.0 + 4.0 * i as f32, 280.0 - 2.0 * i as f32),
         );
@@ -493,7 +518,7 @@ fn world_space_drag_through_a_camera() {
     // Snapped to a point at another depth, it keeps its own (a 2D card keeps its draw order).
     app.world_mut().get_mut::<SpringDrag>(card).unwrap().snap =
         Snap::Points(vec![Vec3::new(100.0, 100.0, -40.0)]);
-    drag_end(&mut app, card, Vec2::new(455.0, 260.0));
+    drag_end(app.world_mut(), card, Vec2::new(455.0, 260.0));
     let target = app.world().get::<TranslationSpring>(card).unwrap().target();
     assert_eq!(target, Vec3::new(100.0, 100.0, 5.0));
 }
@@ -517,9 +542,14 @@ fn drag_threshold_keeps_clicks_clicks() {
         distance,
         delta: Vec2::ZERO,
     };
-    drag_start(&mut app, card, Vec2::new(50.0, 50.0), Entity::PLACEHOLDER);
+    drag_start(
+        app.world_mut(),
+        card,
+        Vec2::new(50.0, 50.0),
+        Entity::PLACEHOLDER,
+    );
     pointer(
-        &mut app,
+        app.world_mut(),
         card,
         Vec2::new(52.0, 51.0),
         moved(Vec2::new(2.0, 1.0)),
@@ -527,13 +557,18 @@ fn drag_threshold_keeps_clicks_clicks() {
     run(&mut app, 1);
     assert_ne!(state(&app, card), InteractionState::Dragged);
     assert_eq!(ui_position(&app, card), Vec2::ZERO);
-    drag_end(&mut app, card, Vec2::new(52.0, 51.0));
+    drag_end(app.world_mut(), card, Vec2::new(52.0, 51.0));
     run(&mut app, 1);
     assert!(app.world().resource::<Released>().0.is_empty(), "a click");
 
-    drag_start(&mut app, card, Vec2::new(50.0, 50.0), Entity::PLACEHOLDER);
+    drag_start(
+        app.world_mut(),
+        card,
+        Vec2::new(50.0, 50.0),
+        Entity::PLACEHOLDER,
+    );
     pointer(
-        &mut app,
+        app.world_mut(),
         card,
         Vec2::new(54.0, 50.0),
         moved(Vec2::new(4.0, 0.0)),
@@ -541,7 +576,7 @@ fn drag_threshold_keeps_clicks_clicks() {
     run(&mut app, 1);
     assert_eq!(ui_position(&app, card), Vec2::ZERO);
     pointer(
-        &mut app,
+        app.world_mut(),
         card,
         Vec2::new(58.0, 50.0),
         moved(Vec2::new(8.0, 0.0)),
@@ -554,13 +589,13 @@ fn drag_threshold_keeps_clicks_clicks() {
         "taken where it is: no jump"
     );
     pointer(
-        &mut app,
+        app.world_mut(),
         card,
         Vec2::new(78.0, 50.0),
         moved(Vec2::new(28.0, 0.0)),
     );
     run(&mut app, 1);
     assert_eq!(ui_position(&app, card), Vec2::new(20.0, 0.0));
-    drag_end(&mut app, card, Vec2::new(78.0, 50.0));
+    drag_end(app.world_mut(), card, Vec2::new(78.0, 50.0));
     assert_eq!(app.world().resource::<Released>().0.len(), 1);
 }

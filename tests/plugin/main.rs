@@ -12,6 +12,7 @@ mod arrival;
 mod assets;
 mod bad_input;
 mod catch_up;
+mod chaos;
 mod choreography;
 mod clocks;
 mod disabling;

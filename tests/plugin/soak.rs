@@ -11,30 +11,7 @@ use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
 use bevy_sprung::ui::{NodeLeft, NodeLeftSpring};
 
-use crate::harness::app;
-
-/// A small, seeded generator (`SplitMix64`).
-struct Random(u64);
-
-impl Random {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    fn unit(&mut self) -> f32 {
-        #[expect(clippy::cast_precision_loss, reason = "24 random bits")]
-        let unit = (self.next() >> 40) as f32 / (1_u32 << 24) as f32;
-        unit
-    }
-
-    fn symmetric(&mut self, scale: f32) -> f32 {
-        scale * (2.0 * self.unit() - 1.0)
-    }
-}
+use crate::harness::{Random, app};
 
 /// The settle events of this frame: entity and property (0 translation, 1 node, 2 spin).
 #[derive(Resource, Default)]
