@@ -731,3 +731,17 @@ fn a_target_at_the_edge_of_f32_is_reached_without_leaving_it() {
     let node = app.world().get::<Node>(entity).unwrap();
     assert_eq!(Val2::new(node.width, node.height), target);
 }
+
+/// A follower told to follow itself (a misconfiguration) rests where it is told to be instead of
+/// running away from itself, with one warning.
+#[test]
+fn a_follower_of_itself_rests() {
+    let mut app = app(60);
+    let follower = spawn_translation(&mut app, Spring::smooth(), Vec3::ZERO, Vec3::X);
+    app.world_mut()
+        .entity_mut(follower)
+        .insert(SpringFollow::new(follower, Vec3::new(0.0, 5.0, 0.0)));
+    run(&mut app, 600);
+    assert!(asleep::<Translation>(&app, follower));
+    assert_eq!(translation(&app, follower), Vec3::X);
+}

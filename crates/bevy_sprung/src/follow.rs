@@ -4,6 +4,7 @@ use core::any::TypeId;
 
 use bevy::ecs::lifecycle::HookContext;
 use bevy::ecs::world::DeferredWorld;
+use bevy::log::warn_once;
 use bevy::prelude::*;
 
 use crate::clock::SpringTime;
@@ -163,13 +164,22 @@ fn sample_fixed_targets(
 fn follow_targets(
     time: SpringTime,
     fixed_time: Res<Time<Fixed>>,
-    mut followers: Query<(&mut SpringFollow, &mut TranslationSpring)>,
+    mut followers: Query<(Entity, &mut SpringFollow, &mut TranslationSpring)>,
     transforms: Query<(&Transform, Option<&ChildOf>)>,
     globals: Query<&GlobalTransform>,
 ) {
     let steps = time.steps();
-    for (mut follow, mut spring) in &mut followers {
-        let sample = match world_position(follow.target, &transforms, &globals) {
+    for (follower, mut follow, mut spring) in &mut followers {
+        if follow.target == follower {
+            warn_once!(
+                "bevy_sprung: {follower} follows itself (SpringFollow::target is its own \
+                 entity); it rests instead of running away from itself"
+            );
+        }
+        let found = Some(follow.target)
+            .filter(|&target| target != follower)
+            .and_then(|target| world_position(target, &transforms, &globals));
+        let sample = match found {
             None => None,
             Some(position) => match follow.motion {
                 TargetMotion::PerFrame => {
