@@ -188,7 +188,8 @@ impl DragBounds {
 ///
 /// The spring's own parameters are the release motion's (or [`release_spring`]'s); the state
 /// becomes [`InteractionState::Dragged`] while dragged, so [`InteractionTargets`] can lift
-/// and tint it.
+/// and tint it. A drag ends on release even if the spring or the value it moves was removed
+/// meanwhile (nothing is flung then, and the next drag grabs the entity afresh).
 ///
 /// [`release_spring`]: Self::release_spring
 /// [`InteractionTargets`]: super::InteractionTargets

@@ -30,7 +30,8 @@ use crate::space::{Carried, SpringSpace, SpringVector};
 /// [`set_target_velocity`](Self::set_target_velocity) makes it follow a moving target without
 /// lag jitter. When the offset and the velocity fall under its [`RestThreshold`], the spring
 /// snaps onto the target, triggers [`SpringSettled<P>`](super::SpringSettled) once, and sleeps:
-/// it is not iterated and writes nothing until the target changes or it is kicked.
+/// it is not iterated and writes nothing until the target changes, it is kicked, or something
+/// else writes its property.
 ///
 /// This component is the spring's configuration; its motion (the velocity, read with
 /// [`SpringMotion::velocity`], and what it carries from frame to frame) is the required
@@ -44,6 +45,13 @@ use crate::space::{Carried, SpringSpace, SpringVector};
 /// own value over it. Between its own writes it keeps the digits of the offset that the
 /// property cannot hold, so it arrives at any magnitude and frame rate instead of stopping a
 /// rounding short.
+///
+/// When the world changes under it: inserted (also over another spring, or again after it was
+/// removed) it starts at rest from wherever the property is, awake, toward its target (the
+/// velocity of a spring it replaces is not kept: retarget with the setters to keep it). Removed,
+/// it leaves the property where it is. While the component it moves is missing, or its entity is
+/// disabled, it pauses; back, it goes on from the property's value and takes up what was set
+/// meanwhile. A settle event is never delivered for a despawned entity.
 ///
 /// The common path cannot fail: [`set_target`](Self::set_target) and the other setters take any
 /// finite value. A NaN or infinite target, velocity or impulse is refused with one warning and
@@ -775,7 +783,8 @@ where
 }
 
 /// Present while the spring on property `P` of this entity rests; the plugin adds and removes
-/// it. Resting springs are not iterated, so a scene of sleeping springs costs almost nothing.
+/// it. Resting springs are not iterated, so a scene of sleeping springs costs almost nothing;
+/// one whose target changes, that is kicked, or whose property something else writes, wakes.
 /// Removed (by the plugin, or by hand, as from an entity disabled meanwhile), it marks the
 /// spring's configuration changed: what changed while the spring was not stepped is taken up.
 #[derive(Component, Reflect)]
