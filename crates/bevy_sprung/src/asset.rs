@@ -25,6 +25,10 @@ use sprung::{RestThreshold, Spring};
 use crate::choreography::{Advance, OnInterrupt, Repeat, SpringSequence};
 use crate::control::SpringControl;
 use crate::property::{SpringProperty, ValueOf};
+use crate::spring::{
+    PropertySpring, PropertySystems, SpringPhase, SpringUpdate, add_property_systems,
+    add_systems_on_first_use, first_use,
+};
 
 /// The RON dialect the files are read in: `Some(…)` may be left out of optional fields.
 fn ron_options() -> ron::Options {
@@ -309,6 +313,7 @@ impl AssetLoader for SequencePresetLoader {
 /// }
 /// ```
 #[derive(Component, Reflect, Debug, Clone, PartialEq, Eq)]
+#[component(on_add = first_use::<Self>)]
 #[reflect(Component, Debug, Clone)]
 pub struct UseSpringPreset(pub Handle<SpringPreset>);
 
@@ -362,7 +367,7 @@ fn changed<A: Asset>(events: &mut MessageReader<AssetEvent<A>>) -> Vec<AssetId<A
 
 /// Gives presets that loaded or changed to the springs on property `P` that use them, and
 /// presets that are already loaded to springs that started using them.
-pub(crate) fn apply_presets<P, C>(
+fn apply_presets<P, C>(
     mut events: MessageReader<AssetEvent<SpringPreset>>,
     presets: Res<Assets<SpringPreset>>,
     mut springs: Query<(Ref<UseSpringPreset>, &mut C)>,
@@ -448,6 +453,23 @@ impl Plugin for SpringAssetPlugin {
     }
 }
 
+/// Presets from files reach property `P`'s springs, in [`SpringPhase::Configure`]: what
+/// [`SpringPropertyPlugin<P>`](crate::SpringPropertyPlugin) adds of assets. The system joins
+/// with the first [`UseSpringPreset`].
+pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
+    let users = [core::any::TypeId::of::<UseSpringPreset>()];
+    add_systems_on_first_use(app, &users, SpringUpdate, |schedule| {
+        schedule.add_systems(
+            apply_presets::<P, PropertySpring<P>>
+                .in_set(PropertySystems::<P>::phase(SpringPhase::Configure))
+                .run_if(
+                    resource_exists::<Assets<SpringPreset>>
+                        .and_then(any_with_component::<UseSpringPreset>),
+                ),
+        );
+    });
+}
+
 /// Sequences from `*.sequence.ron` files for property `P`, whose values must be readable from
 /// RON (`serde`). Adding it twice is harmless.
 pub struct SequenceAssetPlugin<P: SpringProperty>(PhantomData<fn() -> P>);
@@ -465,11 +487,11 @@ where
 {
     fn build(&self, app: &mut App) {
         app.register_type::<UseSequencePreset<P>>();
-        let springs = [core::any::TypeId::of::<crate::spring::PropertySpring<P>>()];
-        crate::spring::add_property_systems(app, &springs, |schedule| {
+        let springs = [core::any::TypeId::of::<PropertySpring<P>>()];
+        add_property_systems(app, &springs, |schedule| {
             schedule.add_systems(
                 apply_sequence_presets::<P>
-                    .before(crate::spring::PropertySystems::<P>::default())
+                    .in_set(PropertySystems::<P>::phase(SpringPhase::Configure))
                     .run_if(any_with_component::<UseSequencePreset<P>>),
             );
         });

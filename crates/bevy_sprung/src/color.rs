@@ -2,9 +2,9 @@
 
 use bevy::prelude::*;
 
+use crate::property_plugin::SpringPropertyPlugin;
 #[cfg(doc)]
 use crate::space::OklabColor;
-use crate::spring::SpringPropertyPlugin;
 
 #[cfg(feature = "sprite")]
 mod sprite {
@@ -12,7 +12,6 @@ mod sprite {
 
     use crate::space::OklabColor;
     use crate::spring::PropertySpring;
-    use crate::spring_property;
 
     spring_property!(
         /// `Sprite::color`, in Oklab.
@@ -32,7 +31,6 @@ mod ui {
 
     use crate::space::OklabColor;
     use crate::spring::PropertySpring;
-    use crate::spring_property;
 
     spring_property!(
         /// `BackgroundColor`, in Oklab.

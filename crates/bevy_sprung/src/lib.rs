@@ -42,12 +42,17 @@
 //!
 //! # Layout
 //! Each domain is a module with its own plugin, components and systems, and [`SpringPlugin`]
-//! adds them all: [`clock`] ([`SpringClockPlugin`](clock::SpringClockPlugin)), [`spring`] (the
-//! mechanism: [`SpringSchedulePlugin`](spring::SpringSchedulePlugin),
-//! [`SpringPropertyPlugin`](spring::SpringPropertyPlugin)), [`transform`], [`spin`],
-//! [`follow`], [`juice`], `color`, `ui`, `interaction` and `visibility` (behind their
-//! features). Add the domain plugins
-//! alone to spring only what you need.
+//! adds them all. At the bottom, [`space`] (how values spring) and [`clock`]
+//! ([`SpringClockPlugin`](clock::SpringClockPlugin)); above them [`spring`], the mechanism
+//! every property shares ([`SpringSchedulePlugin`](spring::SpringSchedulePlugin),
+//! [`PropertyStepPlugin`](spring::PropertyStepPlugin), the sets and phases
+//! ([`PropertySystems`](spring::PropertySystems), [`SpringPhase`](spring::SpringPhase)) and the
+//! events ([`SpringSettled`](spring::SpringSettled), [`SpringWoke`](spring::SpringWoke))); and
+//! on top the features, which join the mechanism's sets or observe its events and which it
+//! never imports: [`choreography`], [`follow`], [`juice`], [`reduced_motion`], `interaction`,
+//! `asset` and `visibility` (behind their features), and the properties of [`transform`],
+//! [`spin`], `color` and `ui`. [`SpringPropertyPlugin`] adds one property with the mechanism
+//! and every feature's part of it. Add the domain plugins alone to spring only what you need.
 //!
 //! # Features
 //! - `visibility`: [`CatchUpWhenHidden`](visibility::CatchUpWhenHidden), which needs
@@ -64,6 +69,10 @@
 
 extern crate alloc;
 
+// First: `spring_property!` is in scope, by name, in every module declared after this one.
+#[macro_use]
+pub mod property;
+
 #[cfg(feature = "asset")]
 pub mod asset;
 pub mod choreography;
@@ -78,7 +87,7 @@ pub mod follow;
 pub mod interaction;
 pub mod juice;
 mod plugin;
-pub mod property;
+mod property_plugin;
 pub mod reduced_motion;
 pub mod space;
 pub mod spin;
@@ -90,6 +99,7 @@ pub mod ui;
 pub mod visibility;
 
 pub use plugin::SpringPlugin;
+pub use property_plugin::SpringPropertyPlugin;
 
 /// Guides: long-form documentation.
 pub mod guides {
@@ -106,17 +116,8 @@ pub mod guides {
 pub struct ReadmeDoctests;
 pub use sprung;
 
-/// What [`spring_property!`] expands to needs these, from this crate whatever the caller's
-/// dependencies are called.
-#[doc(hidden)]
-pub mod __macro {
-    pub use bevy::reflect::TypePath;
-    pub use sprung::RestThreshold;
-}
-
 /// The types most apps need: `use bevy_sprung::prelude::*;`.
 pub mod prelude {
-    pub use crate::SpringPlugin;
     pub use crate::choreography::{
         AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted, SequenceInterrupted,
         SpringGroup, SpringGroupSettled, SpringSequence,
@@ -144,8 +145,8 @@ pub mod prelude {
     pub use crate::space::{Linear, NeverThroughZero, ShortestAngle, ShortestArc};
     pub use crate::spin::{Spin, SpinSpring};
     pub use crate::spring::{
-        PropertySpring, SpringAsleep, SpringMotion, SpringPropertyPlugin, SpringSettled,
-        SpringSystems, SpringTargetMut,
+        PropertySpring, SpringAsleep, SpringMotion, SpringSettled, SpringSystems, SpringTargetMut,
+        SpringWoke,
     };
     pub use crate::spring_property;
     pub use crate::transform::{
@@ -158,5 +159,6 @@ pub mod prelude {
     };
     #[cfg(feature = "visibility")]
     pub use crate::visibility::CatchUpWhenHidden;
+    pub use crate::{SpringPlugin, SpringPropertyPlugin};
     pub use sprung::{RestThreshold, Spring};
 }

@@ -16,7 +16,7 @@ use crate::transform::TransformSpringPlugin;
 /// Everything: springs for `Transform`s, whole turns ([`Spin`](crate::spin::Spin)), followers
 /// ([`SpringFollow`](crate::follow::SpringFollow)), and with their features colours, UI geometry
 /// and catch-up for hidden springs. It adds each domain's plugin; add those alone to spring only
-/// part of this, and [`SpringPropertyPlugin`](crate::spring::SpringPropertyPlugin) for a field
+/// part of this, and [`SpringPropertyPlugin`](crate::SpringPropertyPlugin) for a field
 /// of your own.
 ///
 /// # Example

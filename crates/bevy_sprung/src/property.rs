@@ -12,7 +12,7 @@ use crate::space::SpringSpace;
 ///
 /// Write one with [`spring_property!`](crate::spring_property) — one line per field; every
 /// built-in property is written that way — and add its
-/// [`SpringPropertyPlugin`](crate::spring::SpringPropertyPlugin).
+/// [`SpringPropertyPlugin`](crate::SpringPropertyPlugin).
 pub trait SpringProperty: TypePath + Send + Sync + 'static {
     /// The component the field is on.
     type Component: Component<Mutability = Mutable>;
@@ -90,6 +90,8 @@ pub type VelocityOf<P> = <<P as SpringProperty>::Space as SpringSpace>::Velocity
 /// }
 /// assert_eq!(app.world().get::<Engine>(engine).unwrap().throttle, 1.0);
 /// ```
+// The two forms expand alike, each in full: neither calls the macro again, so an expansion
+// names no item of this crate's root beyond `$crate::property`.
 #[macro_export]
 macro_rules! spring_property {
     (
@@ -97,27 +99,11 @@ macro_rules! spring_property {
         $visibility:vis $name:ident : $component:ident :: $field:tt as $space:ty
         $(, rest: $rest:expr)? $(,)?
     ) => {
-        $crate::spring_property!(
-            $(#[$attribute])*
-            $visibility $name: $component {
-                get: |component| component.$field,
-                set: |component, value| component.$field = value
-            } as $space $(, rest: $rest)?
-        );
-    };
-    (
-        $(#[$attribute:meta])*
-        $visibility:vis $name:ident : $component:ty {
-            get: |$get:ident| $read:expr,
-            set: |$set:ident, $value:ident| $write:expr $(,)?
-        } as $space:ty
-        $(, rest: $rest:expr)? $(,)?
-    ) => {
         $(#[$attribute])*
         #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
         $visibility struct $name;
 
-        impl $crate::__macro::TypePath for $name {
+        impl $crate::property::__macro::TypePath for $name {
             fn type_path() -> &'static str {
                 concat!(module_path!(), "::", stringify!($name))
             }
@@ -142,7 +128,57 @@ macro_rules! spring_property {
         impl $crate::property::SpringProperty for $name {
             type Component = $component;
             type Space = $space;
-            $(const DEFAULT_REST: $crate::__macro::RestThreshold<f32> = $rest;)?
+            $(const DEFAULT_REST: $crate::property::__macro::RestThreshold<f32> = $rest;)?
+
+            #[inline]
+            fn get(component: &$component) -> $crate::property::ValueOf<Self> {
+                component.$field
+            }
+
+            #[inline]
+            fn set(component: &mut $component, value: $crate::property::ValueOf<Self>) {
+                component.$field = value;
+            }
+        }
+    };
+    (
+        $(#[$attribute:meta])*
+        $visibility:vis $name:ident : $component:ty {
+            get: |$get:ident| $read:expr,
+            set: |$set:ident, $value:ident| $write:expr $(,)?
+        } as $space:ty
+        $(, rest: $rest:expr)? $(,)?
+    ) => {
+        $(#[$attribute])*
+        #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+        $visibility struct $name;
+
+        impl $crate::property::__macro::TypePath for $name {
+            fn type_path() -> &'static str {
+                concat!(module_path!(), "::", stringify!($name))
+            }
+
+            fn short_type_path() -> &'static str {
+                stringify!($name)
+            }
+
+            fn type_ident() -> Option<&'static str> {
+                Some(stringify!($name))
+            }
+
+            fn module_path() -> Option<&'static str> {
+                Some(module_path!())
+            }
+
+            fn crate_name() -> Option<&'static str> {
+                module_path!().split("::").next()
+            }
+        }
+
+        impl $crate::property::SpringProperty for $name {
+            type Component = $component;
+            type Space = $space;
+            $(const DEFAULT_REST: $crate::property::__macro::RestThreshold<f32> = $rest;)?
 
             #[inline]
             fn get($get: &$component) -> $crate::property::ValueOf<Self> {
@@ -155,4 +191,12 @@ macro_rules! spring_property {
             }
         }
     };
+}
+
+/// What [`spring_property!`] expands to needs these, from this crate whatever the caller's
+/// dependencies are called.
+#[doc(hidden)]
+pub mod __macro {
+    pub use bevy::reflect::TypePath;
+    pub use sprung::RestThreshold;
 }

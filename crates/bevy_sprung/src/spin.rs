@@ -4,11 +4,9 @@ use core::any::TypeId;
 
 use bevy::prelude::*;
 
+use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::Linear;
-use crate::spring::{
-    PropertySpring, PropertySystems, SpringPropertyPlugin, add_property_systems, step_springs,
-};
-use crate::spring_property;
+use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_systems};
 
 /// An angle about a fixed axis that sets the entity's rotation: `Transform::rotation` becomes
 /// the rotation by [`angle`](Self::angle) about [`axis`](Self::axis) (and, with feature `ui`,
@@ -134,8 +132,9 @@ fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
 }
 
 /// [`Spin`] and [`SpinSpring`]: whole turns (part of [`SpringPlugin`](crate::SpringPlugin)).
-/// A spin sets the rotation right after its spring stepped, inside the spin's property set, so
-/// it is ordered with every other property that writes a `Transform`.
+/// A spin sets the rotation right after its spring stepped, in the spin property's
+/// [`SpringPhase::Observe`], so it is ordered with every other property that writes a
+/// `Transform`.
 #[derive(Debug, Default, Clone, Copy)]
 pub struct SpinPlugin;
 
@@ -149,15 +148,13 @@ impl Plugin for SpinPlugin {
         add_property_systems(app, &springs, |schedule| {
             schedule.add_systems(
                 apply_spin
-                    .after(step_springs::<SpinAngle>)
-                    .in_set(PropertySystems::<SpinAngle>::default())
+                    .in_set(PropertySystems::<SpinAngle>::phase(SpringPhase::Observe))
                     .run_if(any_with_component::<Spin>),
             );
             #[cfg(feature = "ui")]
             schedule.add_systems(
                 apply_ui_spin
-                    .after(step_springs::<SpinAngle>)
-                    .in_set(PropertySystems::<SpinAngle>::default())
+                    .in_set(PropertySystems::<SpinAngle>::phase(SpringPhase::Observe))
                     .run_if(any_with_component::<Spin>),
             );
         });

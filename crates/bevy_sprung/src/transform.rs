@@ -3,9 +3,9 @@
 use bevy::prelude::*;
 use sprung::RestThreshold;
 
+use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Linear, NeverThroughZero, ShortestArc};
-use crate::spring::{PropertySpring, SpringPropertyPlugin};
-use crate::spring_property;
+use crate::spring::PropertySpring;
 
 /// A scale rests ten times finer than a position: a ten-thousandth of its size.
 const SCALE_REST: RestThreshold<f32> = RestThreshold {

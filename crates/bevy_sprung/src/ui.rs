@@ -7,9 +7,9 @@
 
 use bevy::prelude::*;
 
+use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Length, Length2, Linear, NeverThroughZero, ShortestAngle};
-use crate::spring::{PropertySpring, SpringPropertyPlugin};
-use crate::spring_property;
+use crate::spring::PropertySpring;
 
 spring_property!(
     /// `UiTransform::translation`, each axis a [`Length`]: moves a node without relayout (a

@@ -1,6 +1,14 @@
 //! Springs nobody sees: skip frames, then catch up exactly in one step.
 
+use core::any::TypeId;
+
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
+
+use crate::spring::{
+    SkipFrames, SpringSystems, add_systems_on_first_use, first_use, spring_schedule,
+};
 
 /// Opt-in for springs that nobody sees: while the entity's `ViewVisibility` is false its
 /// springs skip frames, and are advanced exactly, in one step over the accumulated time, when
@@ -31,15 +39,46 @@ use bevy::prelude::*;
 /// ```
 #[derive(Component, Reflect, Debug, Default, Clone, Copy)]
 #[reflect(Component, Default, Debug, Clone)]
+#[require(SkipFrames)]
+#[component(on_add = first_use::<Self>, on_remove = stop_skipping)]
 pub struct CatchUpWhenHidden;
 
-/// Registers [`CatchUpWhenHidden`] (part of [`SpringPlugin`](crate::SpringPlugin) with feature
-/// `visibility`); the spring systems read it.
+/// The hook of a [`CatchUpWhenHidden`] removed: its springs step every frame again (the
+/// [`SkipFrames`] it required goes too, and with it any time put aside is caught up).
+fn stop_skipping(mut world: DeferredWorld, context: HookContext) {
+    world
+        .commands()
+        .entity(context.entity)
+        .try_remove::<SkipFrames>();
+}
+
+/// Before the springs step: springs of entities nobody saw last frame skip frames.
+/// (`ViewVisibility` tells what the last frame drew: it lags a frame.)
+fn skip_unseen_frames(
+    mut springs: Query<(&ViewVisibility, &mut SkipFrames), With<CatchUpWhenHidden>>,
+) {
+    for (visibility, mut skip) in &mut springs {
+        skip.set_if_neq(SkipFrames(!visibility.get()));
+    }
+}
+
+/// [`CatchUpWhenHidden`] (part of [`SpringPlugin`](crate::SpringPlugin) with feature
+/// `visibility`): keeps its entity's [`SkipFrames`] equal to "not seen" before the springs
+/// step, from the first `CatchUpWhenHidden`.
 #[derive(Debug, Default, Clone, Copy)]
 pub struct CatchUpPlugin;
 
 impl Plugin for CatchUpPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<CatchUpWhenHidden>();
+        let schedule = spring_schedule(app);
+        let catching_up = [TypeId::of::<CatchUpWhenHidden>()];
+        add_systems_on_first_use(app, &catching_up, schedule, |schedule| {
+            schedule.add_systems(
+                skip_unseen_frames
+                    .before(SpringSystems)
+                    .run_if(any_with_component::<CatchUpWhenHidden>),
+            );
+        });
     }
 }

@@ -7,7 +7,8 @@ use bevy::ecs::world::DeferredWorld;
 use bevy::platform::collections::HashSet;
 use bevy::prelude::*;
 
-use crate::spring::trigger_if_alive;
+use crate::property::SpringProperty;
+use crate::spring::{SpringWoke, trigger_if_alive};
 
 /// Makes this entity's springs report together: when every spring on the entity (any property)
 /// has settled, [`AllSpringsSettled`] is triggered on it, once; and when every spring of every
@@ -87,7 +88,7 @@ pub struct SpringGroupSettled {
 
 /// Which grouped entities are moving.
 #[derive(Resource, Default, Debug)]
-pub(crate) struct SettleTracker {
+pub(super) struct SettleTracker {
     /// Entities with a spring that moved since they last reported.
     in_motion: HashSet<Entity>,
     /// Entities with an awake spring after this frame's steps.
@@ -98,11 +99,6 @@ pub(crate) struct SettleTracker {
 }
 
 impl SettleTracker {
-    /// Notes that `entity` has a spring in motion (woken this frame, or awake after its step).
-    pub(crate) fn moving(&mut self, entity: Entity) {
-        self.in_motion.insert(entity);
-    }
-
     /// Whether [`announce_settled`] has anything to look at.
     fn has_news(&self) -> bool {
         !(self.in_motion.is_empty() && self.left.is_empty())
@@ -133,9 +129,21 @@ pub(super) fn has_news(tracker: Option<Res<SettleTracker>>) -> bool {
     tracker.is_some_and(|tracker| tracker.has_news())
 }
 
+/// A spring on property `P` woke: a grouped entity is in motion, even if it settles again
+/// within the frame.
+pub(super) fn note_woken<P: SpringProperty>(
+    woken: On<SpringWoke<P>>,
+    grouped: Query<(), With<SpringGroup>>,
+    mut tracker: ResMut<SettleTracker>,
+) {
+    if grouped.contains(woken.entity) {
+        tracker.in_motion.insert(woken.entity);
+    }
+}
+
 /// After property `C`'s springs stepped: notes the grouped entities whose spring on it is
 /// awake (`A`: the property's sleep marker).
-pub(crate) fn note_awake<C: Component, A: Component>(
+pub(super) fn note_awake<C: Component, A: Component>(
     mut tracker: ResMut<SettleTracker>,
     awake: Query<Entity, (With<SpringGroup>, With<C>, Without<A>)>,
 ) {

@@ -16,24 +16,27 @@ pub use sequence::{
 };
 pub use systems::{SequenceCompleted, SequenceInterrupted};
 
-pub(crate) use group::{SettleTracker, note_awake};
-pub(crate) use systems::drive_sequences;
+use core::any::TypeId;
 
 use bevy::prelude::*;
 
-use crate::spring::SpringSystems;
+use crate::property::SpringProperty;
+use crate::spring::{
+    PropertySpring, PropertySystems, SpringAsleep, SpringPhase, SpringSystems, SpringUpdate,
+    add_systems_on_first_use, spring_schedule,
+};
 
 /// Group completion ([`SpringGroup`]) and the choreography types (part of
 /// [`SpringPlugin`](crate::SpringPlugin)). The per-property systems that drive
 /// [`SpringSequence`]s come with each property's
-/// [`SpringPropertyPlugin`](crate::spring::SpringPropertyPlugin).
+/// [`SpringPropertyPlugin`](crate::SpringPropertyPlugin).
 #[derive(Debug, Default, Clone, Copy)]
 pub struct ChoreographyPlugin;
 
 impl Plugin for ChoreographyPlugin {
     fn build(&self, app: &mut App) {
-        let schedule = crate::spring::spring_schedule(app);
-        app.init_resource::<SettleTracker>()
+        let schedule = spring_schedule(app);
+        app.init_resource::<group::SettleTracker>()
             .register_type::<SpringGroup>()
             .register_type::<Advance>()
             .register_type::<Repeat>()
@@ -41,8 +44,8 @@ impl Plugin for ChoreographyPlugin {
             .register_type::<OnInterrupt>()
             .register_type::<SequencePhase>();
         // With the first group.
-        let groups = [core::any::TypeId::of::<SpringGroup>()];
-        crate::spring::add_systems_on_first_use(app, &groups, schedule, |schedule| {
+        let groups = [TypeId::of::<SpringGroup>()];
+        add_systems_on_first_use(app, &groups, schedule, |schedule| {
             schedule.add_systems(
                 group::announce_settled
                     .after(SpringSystems)
@@ -50,4 +53,29 @@ impl Plugin for ChoreographyPlugin {
             );
         });
     }
+}
+
+/// What [`SpringPropertyPlugin<P>`](crate::SpringPropertyPlugin) adds of choreography:
+/// sequences of `P` drive its springs in [`SpringPhase::Choreograph`] (with the first
+/// [`SpringSequence<P>`]), and groups note which of its springs move, in
+/// [`SpringPhase::Observe`] and when one wakes (with the first [`SpringGroup`]).
+pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
+    app.register_type::<SpringSequence<P>>()
+        .add_observer(group::note_woken::<P>);
+    let sequences = [TypeId::of::<SpringSequence<P>>()];
+    add_systems_on_first_use(app, &sequences, SpringUpdate, |schedule| {
+        schedule.add_systems(
+            systems::drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>
+                .in_set(PropertySystems::<P>::phase(SpringPhase::Choreograph))
+                .run_if(any_with_component::<SpringSequence<P>>),
+        );
+    });
+    let groups = [TypeId::of::<SpringGroup>()];
+    add_systems_on_first_use(app, &groups, SpringUpdate, |schedule| {
+        schedule.add_systems(
+            group::note_awake::<PropertySpring<P>, SpringAsleep<P>>
+                .in_set(PropertySystems::<P>::phase(SpringPhase::Observe))
+                .run_if(any_with_component::<SpringGroup>),
+        );
+    });
 }

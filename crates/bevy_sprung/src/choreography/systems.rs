@@ -67,7 +67,7 @@ entity_event!(SequenceInterrupted);
 
 /// Before property `P`'s springs step: moves every playing sequence on (a delay that ran out,
 /// a step that settled or timed out), detects interruptions, and triggers the events.
-pub(crate) fn drive_sequences<P, C, A>(
+pub(super) fn drive_sequences<P, C, A>(
     time: SpringTime,
     mut commands: Commands,
     mut sequences: Query<(Entity, &mut SpringSequence<P>, &mut C, Has<A>)>,

@@ -33,6 +33,9 @@ use bevy::prelude::*;
 
 use crate::control::SpringControl;
 use crate::property::{SpringProperty, ValueOf};
+use crate::spring::{
+    PropertySpring, PropertySystems, SpringPhase, SpringUpdate, add_systems_on_first_use, first_use,
+};
 
 /// How a pointer is interacting with an entity, kept up to date from `bevy_picking`'s pointer
 /// events: by priority `Disabled` (`bevy_ui`'s `InteractionDisabled`, with the `ui` feature),
@@ -62,7 +65,7 @@ use crate::property::{SpringProperty, ValueOf};
 #[reflect(Component, Debug, Default, PartialEq, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[require(PointerContacts)]
-#[component(on_add = crate::spring::first_use::<InteractionState>)]
+#[component(on_add = first_use::<InteractionState>)]
 pub enum InteractionState {
     /// No pointer on it.
     #[default]
@@ -310,6 +313,7 @@ fn update_states(
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]
+#[component(on_add = first_use::<Self>)]
 #[reflect(Component, Debug, Clone)]
 #[require(InteractionState)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -427,7 +431,7 @@ impl<P: SpringProperty> fmt::Debug for InteractionTargets<P> {
 
 /// Before property `P`'s springs step: retargets the spring of every entity whose state or
 /// targets changed (a retarget keeps the velocity).
-pub(crate) fn retarget_on_interaction<P, C>(
+fn retarget_on_interaction<P, C>(
     mut springs: Query<
         (&InteractionState, &InteractionTargets<P>, &mut C),
         Or<(Changed<InteractionState>, Changed<InteractionTargets<P>>)>,
@@ -444,10 +448,25 @@ pub(crate) fn retarget_on_interaction<P, C>(
     }
 }
 
+/// Pointer states retarget property `P`'s springs, in [`SpringPhase::Input`]: what
+/// [`SpringPropertyPlugin<P>`](crate::SpringPropertyPlugin) adds of interaction. The system
+/// joins with the first [`InteractionTargets<P>`].
+pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
+    app.register_type::<InteractionTargets<P>>();
+    let targets = [core::any::TypeId::of::<InteractionTargets<P>>()];
+    add_systems_on_first_use(app, &targets, SpringUpdate, |schedule| {
+        schedule.add_systems(
+            retarget_on_interaction::<P, PropertySpring<P>>
+                .in_set(PropertySystems::<P>::phase(SpringPhase::Input))
+                .run_if(any_with_component::<InteractionTargets<P>>),
+        );
+    });
+}
+
 /// [`InteractionState`] and [`SpringDrag`] (part of [`SpringPlugin`](crate::SpringPlugin) with
 /// the `picking` feature; the app adds Bevy's picking plugins and a backend). The per-property
 /// systems of [`InteractionTargets`] come with each property's
-/// [`SpringPropertyPlugin`](crate::spring::SpringPropertyPlugin).
+/// [`SpringPropertyPlugin`](crate::SpringPropertyPlugin).
 #[derive(Debug, Default, Clone, Copy)]
 pub struct SpringInteractionPlugin;
 
@@ -466,7 +485,7 @@ impl Plugin for SpringInteractionPlugin {
             .configure_sets(PreUpdate, InteractionSystems.after(PickingSystems::Last));
         // With the first interactive entity.
         let interactive = [core::any::TypeId::of::<InteractionState>()];
-        crate::spring::add_systems_on_first_use(app, &interactive, PreUpdate, |schedule| {
+        add_systems_on_first_use(app, &interactive, PreUpdate, |schedule| {
             schedule.add_systems(
                 update_states
                     .in_set(InteractionSystems)

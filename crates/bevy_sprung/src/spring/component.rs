@@ -104,7 +104,7 @@ pub struct PropertySpring<P: SpringProperty> {
 impl<P: SpringProperty> PropertySpring<P> {
     /// The component hook: the first spring on `P` brings in the property's systems.
     fn on_add(mut world: DeferredWorld, _: HookContext) {
-        super::plugin::spring_added(&mut world, TypeId::of::<Self>());
+        super::first_use::spring_added(&mut world, TypeId::of::<Self>());
     }
 
     /// The component hook: a spring inserted (or replaced, or inserted again after it was

@@ -1,11 +1,17 @@
 //! The mechanism every property shares: the spring component, its step, the systems that run
-//! it, the set they run in, and the event a settled spring triggers.
+//! it, the schedule and sets they run in, and the events springs trigger. Everything built on
+//! springs (choreography, groups, interaction, assets, juice, followers) stands on this module
+//! and joins its sets or observes its events; this module imports none of them.
 
 mod cache;
 mod component;
 mod event;
+mod first_use;
 mod parallel;
 mod plugin;
+mod preference;
+mod schedule;
+mod skip;
 mod systems;
 mod table;
 #[cfg(test)]
@@ -14,13 +20,12 @@ mod tests;
 pub use component::{
     PropertySpring, SpringAsleep, SpringInputError, SpringMotion, SpringTargetMut,
 };
-pub use event::SpringSettled;
-pub use plugin::{
-    PropertySystems, SpringPropertyPlugin, SpringSchedulePlugin, SpringSystems, SpringUpdate,
-};
+pub use event::{SpringSettled, SpringWoke};
+pub use plugin::{PropertyStepPlugin, SpringSchedulePlugin};
+pub use preference::{KeepMotion, ReducedMotion};
+pub use schedule::{PropertySystems, SpringPhase, SpringSystems, SpringUpdate};
+pub use skip::SkipFrames;
 
 pub(crate) use event::trigger_if_alive;
-pub(crate) use plugin::{
-    add_property_systems, add_systems_on_first_use, first_use, spring_schedule,
-};
-pub(crate) use systems::step_springs;
+pub(crate) use first_use::{add_property_systems, add_systems_on_first_use, first_use};
+pub(crate) use plugin::{is_registered, spring_schedule};

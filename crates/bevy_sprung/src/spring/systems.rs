@@ -2,89 +2,95 @@
 
 use bevy::ecs::change_detection::{ContiguousComponentTicksMut, ContiguousMut, MaybeLocation};
 use bevy::ecs::change_detection::{ContiguousRef, MAX_CHANGE_AGE, Tick};
-use bevy::ecs::system::ParallelCommands;
+use bevy::ecs::system::{ParallelCommands, SystemParam};
 use bevy::prelude::*;
 use bevy::utils::Parallel;
 
 use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringAsleep, SpringMotion, Stepped, UsualStep};
-use super::event::SpringSettled;
+use super::event::{SpringSettled, SpringWoke};
 use super::parallel::{SplitRows, scope_threads, split_over_threads};
+use super::preference::{KeepMotion, ReducedMotion};
+use super::skip::SkipFrames;
 use super::table::{PreparedIncrements, TransitionTable};
-use crate::choreography::{SettleTracker, SpringGroup};
 use crate::clock::{FrameSteps, SpringTime};
 use crate::property::{OffsetOf, SpringProperty};
-use crate::reduced_motion::{KeepMotion, ReducedMotion};
 
-/// Springs that never skip a frame: the common case, with nothing to fetch for visibility.
-#[cfg(feature = "visibility")]
-type Seen = Without<crate::visibility::CatchUpWhenHidden>;
-#[cfg(not(feature = "visibility"))]
-type Seen = ();
+/// What the stepping system reads besides the springs: this frame's time steps, the app-wide
+/// motion preference and the entities that opt out of it.
+#[derive(SystemParam)]
+pub(crate) struct StepSettings<'w, 's> {
+    time: SpringTime<'w>,
+    preference: Option<Res<'w, ReducedMotion>>,
+    keep_motion: Query<'w, 's, (), With<KeepMotion>>,
+}
+
+/// The springs on property `P` that are awake: those that step every frame (the common case,
+/// with nothing to read about skipping), and those that may skip frames ([`SkipFrames`]).
+#[derive(SystemParam)]
+pub(crate) struct AwakeSprings<'w, 's, P: SpringProperty> {
+    every_frame: Query<
+        'w,
+        's,
+        (
+            Entity,
+            &'static mut PropertySpring<P>,
+            &'static mut SpringMotion<P>,
+            &'static mut <P as SpringProperty>::Component,
+        ),
+        (Without<SpringAsleep<P>>, Without<SkipFrames>),
+    >,
+    skipping: Query<
+        'w,
+        's,
+        (
+            Entity,
+            &'static mut PropertySpring<P>,
+            &'static mut SpringMotion<P>,
+            &'static mut <P as SpringProperty>::Component,
+            &'static SkipFrames,
+        ),
+        Without<SpringAsleep<P>>,
+    >,
+}
 
 /// Steps every awake spring on property `P`, a table's columns at a time (split into parts
 /// that the compute pool's threads and this one claim, when there are enough springs), and puts
 /// the ones that settle to sleep (triggering [`SpringSettled<P>`]).
 ///
-/// This system runs in [`SpringUpdate`](crate::SpringUpdate), which an exclusive system runs
-/// on the thread that runs the schedule around it: the compute pool's threads are free, and
-/// with the calling thread they use every core Bevy gives the pool, plus one (on a machine with
-/// two cores, both). See [`SpringPlugin`](crate::SpringPlugin) for the task-pool setting that
-/// uses every core on larger machines.
-#[cfg_attr(
-    feature = "visibility",
-    expect(
-        clippy::too_many_arguments,
-        reason = "a system's parameters, each a different resource or query"
-    )
-)]
+/// This system runs in [`SpringUpdate`](crate::spring::SpringUpdate), which an exclusive system
+/// runs on the thread that runs the schedule around it: the compute pool's threads are free,
+/// and with the calling thread they use every core Bevy gives the pool, plus one (on a machine
+/// with two cores, both). See [`SpringPlugin`](crate::SpringPlugin) for the task-pool setting
+/// that uses every core on larger machines.
 pub(crate) fn step_springs<P: SpringProperty>(
-    time: SpringTime,
-    reduced_motion: Option<Res<ReducedMotion>>,
-    exempt: Query<(), With<KeepMotion>>,
+    settings: StepSettings,
     mut table: Local<TransitionTable>,
     caches: Local<Parallel<TransitionCache>>,
-    mut springs: Query<
-        (
-            Entity,
-            &mut PropertySpring<P>,
-            &mut SpringMotion<P>,
-            &mut P::Component,
-        ),
-        (Without<SpringAsleep<P>>, Seen),
-    >,
-    #[cfg(feature = "visibility")] mut catching_up: Query<
-        (
-            Entity,
-            &mut PropertySpring<P>,
-            &mut SpringMotion<P>,
-            &mut P::Component,
-            Option<&ViewVisibility>,
-        ),
-        (
-            Without<SpringAsleep<P>>,
-            With<crate::visibility::CatchUpWhenHidden>,
-        ),
-    >,
+    mut awake: AwakeSprings<P>,
     commands: ParallelCommands,
 ) {
-    let steps = time.steps();
+    let steps = settings.time.steps();
     let table = &mut *table;
     table.prepare_for::<OffsetOf<P>>(steps);
-    let count = springs.iter().len();
-    #[cfg(feature = "visibility")]
-    let count = count + catching_up.iter().len();
-    let preference = reduced_motion.map_or(ReducedMotion::Full, |preference| *preference);
+    let AwakeSprings {
+        every_frame: springs,
+        skipping,
+    } = &mut awake;
+    let count = springs.iter().len() + skipping.iter().len();
+    let preference = settings
+        .preference
+        .map_or(ReducedMotion::Full, |preference| *preference);
     let mut cache = TransitionCache::default();
     if preference.is_reduced() {
         // An accessibility setting, not the hot path: spring by spring, those that may skip
-        // frames while hidden too (a reduced motion is cheap, and never waits to be seen).
+        // frames too (a reduced motion is cheap, and never waits).
         let mut step_reduced = |(entity, mut config, mut motion, mut component): ReducedRow<P>| {
             // The step reads the configuration and changes it only to apply a velocity
             // change or to repair it: the spring is not changed by being stepped.
             let config = config.bypass_change_detection();
             let current = P::get(&component);
-            let frame = if exempt.contains(entity) {
+            let frame = if settings.keep_motion.contains(entity) {
                 motion.step(config, current, steps, false, false, (table, &mut cache))
             } else {
                 motion.step_reduced(config, current, steps, preference, (table, &mut cache))
@@ -97,8 +103,7 @@ pub(crate) fn step_springs<P: SpringProperty>(
             }
         };
         springs.iter_mut().for_each(&mut step_reduced);
-        #[cfg(feature = "visibility")]
-        catching_up
+        skipping
             .iter_mut()
             .for_each(|(entity, config, motion, component, _)| {
                 step_reduced((entity, config, motion, component));
@@ -128,16 +133,14 @@ pub(crate) fn step_springs<P: SpringProperty>(
             step_entity(item, (steps, shared, caches, &commands));
         });
     } else {
-        for item in &mut springs {
+        for item in springs.iter_mut() {
             step_entity(item, (steps, shared, caches, &commands));
         }
     }
-    // Springs that may skip frames while nobody sees them (`ViewVisibility` lags a frame).
-    #[cfg(feature = "visibility")]
-    for (entity, mut config, mut motion, mut component, visibility) in &mut catching_up {
-        let hidden = visibility.is_some_and(|visibility| !visibility.get());
+    // Springs that may skip frames: while they do, the time is put aside for one exact step.
+    for (entity, mut config, mut motion, mut component, skip) in skipping.iter_mut() {
         let config = config.bypass_change_detection();
-        let stepped = motion.step_on(config, &mut component, steps, hidden, (table, &mut cache));
+        let stepped = motion.step_on(config, &mut component, steps, skip.0, (table, &mut cache));
         if stepped == Stepped::Settled {
             put_to_sleep::<P>(&commands, entity);
         }
@@ -522,46 +525,43 @@ fn put_to_sleep<P: SpringProperty>(commands: &ParallelCommands, entity: Entity) 
 /// instruction per spring per frame.
 pub(crate) fn wake_springs<P: SpringProperty>(
     mut commands: Commands,
-    mut tracker: Option<ResMut<SettleTracker>>,
     asleep: Query<
         (
             Entity,
             Ref<PropertySpring<P>>,
             &SpringMotion<P>,
             Ref<P::Component>,
-            Has<SpringGroup>,
         ),
         With<SpringAsleep<P>>,
     >,
 ) {
-    let mut wake = |entity: Entity, grouped: bool| {
+    // Woken (perhaps to settle again this very frame): whoever follows which springs move
+    // hears of it.
+    let mut wake = |entity: Entity| {
         commands.entity(entity).try_remove::<SpringAsleep<P>>();
-        // Woken (perhaps to settle again this very frame): its group hears of it.
-        if grouped && let Some(tracker) = tracker.as_mut() {
-            tracker.moving(entity);
-        }
+        super::trigger_if_alive(&mut commands, SpringWoke::<P>::new(entity));
     };
     let Ok(tables) = asleep.contiguous_iter() else {
         // Not reached (the components are in tables): the same, spring by spring.
-        for (entity, spring, motion, component, grouped) in &asleep {
+        for (entity, spring, motion, component) in &asleep {
             let changes = RowChanges {
                 spring: spring.is_changed(),
                 property: component.is_changed(),
             };
             if changes.wake(&spring, motion, &component) {
-                wake(entity, grouped);
+                wake(entity);
             }
         }
         return;
     };
-    for (entities, springs, motions, components, grouped) in tables {
+    for (entities, springs, motions, components) in tables {
         let (springs, spring_ticks) = ContiguousRef::split(springs);
         let (components, component_ticks) = ContiguousRef::split(components);
         let runs = (spring_ticks.last_run(), spring_ticks.this_run());
         let ticks = (spring_ticks.changed(), component_ticks.changed());
         for_each_changed_row(ticks, runs, |row, changes| {
             if changes.wake(&springs[row], &motions[row], &components[row]) {
-                wake(entities[row], grouped);
+                wake(entities[row]);
             }
         });
     }

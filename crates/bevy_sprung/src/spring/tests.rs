@@ -11,8 +11,32 @@ use super::cache::TransitionCache;
 use super::component::{PropertySpring, SpringMotion, Stepped};
 use super::table::TransitionTable;
 use crate::clock::FrameSteps;
-use crate::spin::{Spin, SpinAngle};
-use crate::transform::TranslationSpring;
+use crate::space::{Linear, NeverThroughZero};
+
+/// A body the tests spring: its position as a translation is (a `Vec3`, stepped in `Vec3A`),
+/// its angle as a spin's, its size as a UI scale's (a `Vec2` kept from crossing zero).
+#[derive(Component, Default)]
+struct Body {
+    position: Vec3,
+    angle: f32,
+    size: Vec2,
+}
+
+spring_property!(
+    /// `Body::position`.
+    Position: Body::position as Linear<Vec3>
+);
+spring_property!(
+    /// `Body::angle`.
+    Angle: Body::angle as Linear<f32>
+);
+spring_property!(
+    /// `Body::size`.
+    Size: Body::size as NeverThroughZero<Linear<Vec2>>
+);
+
+/// A spring on a body's position.
+type PositionSpring = PropertySpring<Position>;
 
 /// The frame rates users run at.
 const FRAME_RATES: [u32; 6] = [30, 60, 120, 144, 240, 360];
@@ -106,17 +130,20 @@ fn check_translation(spring: Spring, start: f32, target: f32) -> Result<(), Test
     let distance = (target - start).abs();
     let analytic = f64::from(spring.settle_time(distance, rest.offset).unwrap());
     for fps in FRAME_RATES {
-        let mut transform = Transform::from_xyz(start, 0.0, 0.0);
+        let mut body = Body {
+            position: Vec3::new(start, 0.0, 0.0),
+            ..default()
+        };
         let mut translation =
-            TranslationSpring::new(spring, Vec3::new(target, 0.0, 0.0)).with_rest(rest);
-        let settled = settle(&mut translation, &mut transform, fps, 2.0 * analytic + 1.0);
+            PositionSpring::new(spring, Vec3::new(target, 0.0, 0.0)).with_rest(rest);
+        let settled = settle(&mut translation, &mut body, fps, 2.0 * analytic + 1.0);
         let frames = 2.0 / f64::from(fps);
         prop_assert!(
             settled.is_some_and(|at| at <= 1.05 * analytic + frames + 1e-9),
             "{spring:?} at {fps} fps from {start} toward {target}: settled {settled:?}, \
              analytic {analytic}"
         );
-        prop_assert_eq!(transform.translation, Vec3::new(target, 0.0, 0.0));
+        prop_assert_eq!(body.position, Vec3::new(target, 0.0, 0.0));
     }
     Ok(())
 }
@@ -125,9 +152,9 @@ fn check_spin(spring: Spring, target: f32) -> Result<(), TestCaseError> {
     let rest = rest_for(&spring, target);
     let analytic = f64::from(spring.settle_time(target.abs(), rest.offset).unwrap());
     for fps in FRAME_RATES {
-        let mut spin = Spin::z(0.0);
-        let mut angle = PropertySpring::<SpinAngle>::new(spring, target).with_rest(rest);
-        let settled = settle(&mut angle, &mut spin, fps, 2.0 * analytic + 1.0);
+        let mut body = Body::default();
+        let mut angle = PropertySpring::<Angle>::new(spring, target).with_rest(rest);
+        let settled = settle(&mut angle, &mut body, fps, 2.0 * analytic + 1.0);
         let frames = 2.0 / f64::from(fps);
         prop_assert!(
             settled.is_some_and(|at| at <= 1.05 * analytic + frames + 1e-9),
@@ -198,8 +225,8 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
         let scale = 10f64.powf(-2.0 + 8.0 * random.unit());
         let parameters = Spring::from_natural_frequency(omega, zeta).unwrap();
         let exact = Spring::<f64>::from(parameters);
-        let mut transform = Transform::default();
-        let mut spring = TranslationSpring::new(parameters, Vec3::ZERO);
+        let mut body = Body::default();
+        let mut spring = PositionSpring::new(parameters, Vec3::ZERO);
         let mut motion = SpringMotion::toward(Vec3::ZERO, spring.rest());
         let mut shadow = [SpringState::at_rest(0.0_f64); 3];
         let mut cache = TransitionCache::default();
@@ -233,7 +260,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
             };
             let stepped = step_frame(
                 (&mut spring, &mut motion),
-                &mut &mut transform,
+                &mut &mut body,
                 FrameSteps::all(dt),
                 false,
                 (&mut table, &mut cache),
@@ -247,7 +274,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
                     step.step(*state, f64::from(target))
                 };
             }
-            let translation = transform.translation;
+            let translation = body.position;
             assert!(
                 translation.is_finite() && motion.velocity().is_finite(),
                 "spring {index} frame {frame}: {translation} {spring:?} {motion:?}"
@@ -264,7 +291,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
         settle_after_the_last_retarget(
             (index, omega, zeta),
             &exact,
-            (&mut spring, &mut motion, &mut transform),
+            (&mut spring, &mut motion, &mut body),
             &mut shadow,
             (&mut table, &mut cache),
         );
@@ -277,11 +304,7 @@ fn a_million_frames_of_hitches_retargets_and_impulses() {
 fn settle_after_the_last_retarget(
     (index, omega, zeta): (usize, f32, f32),
     exact: &Spring<f64>,
-    (spring, motion, transform): (
-        &mut TranslationSpring,
-        &mut SpringMotion<crate::transform::Translation>,
-        &mut Transform,
-    ),
+    (spring, motion, body): (&mut PositionSpring, &mut SpringMotion<Position>, &mut Body),
     shadow: &mut [SpringState<f64>; 3],
     (table, cache): (&mut TransitionTable, &mut TransitionCache),
 ) {
@@ -293,7 +316,7 @@ fn settle_after_the_last_retarget(
     for frame in 1_u32.. {
         let settled = step_frame(
             (spring, motion),
-            &mut &mut *transform,
+            &mut &mut *body,
             FrameSteps::all(dt),
             false,
             (&mut *table, &mut *cache),
@@ -309,14 +332,14 @@ fn settle_after_the_last_retarget(
             shadow_at_rest.get_or_insert(frame);
         }
         if settled {
-            assert_eq!(transform.translation, target);
+            assert_eq!(body.position, target);
             break;
         }
         assert!(
             shadow_at_rest.is_none_or(|at| frame <= at + 2),
             "spring {index} (ω {omega}, ζ {zeta}) stays away from {target} after its shadow \
              settled: {}",
-            transform.translation
+            body.position
         );
     }
 }
@@ -326,9 +349,9 @@ fn settle_after_the_last_retarget(
 /// and the configuration within one cache line.
 #[test]
 fn a_translation_spring_streams_80_bytes() {
-    let motion = size_of::<SpringMotion<crate::transform::Translation>>();
+    let motion = size_of::<SpringMotion<Position>>();
     assert!(motion <= 80, "motion: {motion} bytes");
-    let configuration = size_of::<TranslationSpring>();
+    let configuration = size_of::<PositionSpring>();
     assert!(configuration <= 64, "configuration: {configuration} bytes");
 }
 
@@ -336,10 +359,9 @@ fn a_translation_spring_streams_80_bytes() {
 /// 16-byte aligned, as the allocator's do, its 16-byte state load then straddles two cache
 /// lines in one motion of four, and its other accesses never): the ticket is kept in 4-byte halves (8-byte aligned, it padded the motion to
 /// 56), and holds the time pending (in a field of its own, the motion was 52 bytes).
-#[cfg(feature = "ui")]
 #[test]
 fn a_ui_scale_spring_streams_48_bytes() {
-    let motion = size_of::<SpringMotion<crate::ui::UiTransformScale>>();
+    let motion = size_of::<SpringMotion<Size>>();
     assert!(
         motion <= 48 && motion.is_multiple_of(16),
         "motion: {motion} bytes"
@@ -350,7 +372,7 @@ fn a_ui_scale_spring_streams_48_bytes() {
 /// with time pending has a ticket no slot has, and forgetting the slot keeps the time.
 #[test]
 fn the_time_pending_and_the_slot_ticket_share_a_field() {
-    let mut motion = SpringMotion::<crate::transform::Translation>::default();
+    let mut motion = SpringMotion::<Position>::default();
     assert_eq!(motion.pending().to_bits(), 0);
     assert!(motion.ticket() >= TransitionTable::NO_TICKET);
     for ticket in [

@@ -7,7 +7,6 @@
 
 use bevy::log::warn_once;
 use bevy::math::{NormedVectorSpace, Vec4, VectorSpace};
-#[cfg(any(test, feature = "visibility"))]
 use core::ops::DerefMut;
 
 use sprung::{Spring, SpringState, Transition};
@@ -15,9 +14,9 @@ use sprung::{Spring, SpringState, Transition};
 use super::{PropertySpring, SpringMotion};
 use crate::clock::FrameSteps;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
-use crate::reduced_motion::ReducedMotion;
 use crate::space::{Carried, SpringSpace, SpringVector};
 use crate::spring::cache::TransitionCache;
+use crate::spring::preference::ReducedMotion;
 use crate::spring::table::{PreparedIncrements, SlotIncrements, TransitionTable};
 
 /// What one frame did to a spring, and the value to write, if it changed.
@@ -119,7 +118,6 @@ impl<P: SpringProperty> SpringMotion<P> {
     /// One frame of the spring over `dt` on a component, writing its property if it changed
     /// (through a `Mut`, a write is a change).
     #[inline]
-    #[cfg(any(test, feature = "visibility"))]
     pub(crate) fn step_on<C: DerefMut<Target = P::Component>>(
         &mut self,
         config: &mut PropertySpring<P>,

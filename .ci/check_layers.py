@@ -1,0 +1,227 @@
+#!/usr/bin/env python3
+"""Checks bevy_sprung's layering: the mechanism stands below its features.
+
+Every `use` of the crate's own items (`crate::…`, `super::…`, `self::…`, also `pub use` and
+paths inside braces) is resolved to the file that holds the module it names, the longest module
+path that is a file of the crate. Two rules, each failure printed with the import that breaks it:
+
+1. No file under `crates/bevy_sprung/src/spring/` imports a feature module, nor the top-level
+   plugin (`plugin.rs`): the mechanism may import only `space/`, `clock`, `property`, `control`
+   and itself.
+2. No two files import each other in a circle (a strongly connected component of more than one
+   file, or a file importing itself is not counted).
+
+`mod` declarations are structure, not imports. Exits 1 on a failure.
+"""
+import os
+import re
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SRC = os.path.join(ROOT, "crates", "bevy_sprung", "src")
+# What the mechanism may import besides itself.
+BELOW_SPRING = {"space", "clock", "property", "control"}
+
+
+def module_of(path):
+    """The module path of a source file: `spring/component/step.rs` -> ['spring', 'component',
+    'step']; `lib.rs` -> []; `spring/mod.rs` -> ['spring']."""
+    rel = os.path.relpath(path, SRC)[:-3].split(os.sep)
+    if rel[-1] in ("mod", "lib"):
+        rel = rel[:-1]
+    return rel
+
+
+def file_of(module):
+    """The file that holds `module` (a list of names), or None."""
+    base = os.path.join(SRC, *module) if module else os.path.join(SRC, "lib")
+    for candidate in (base + ".rs", os.path.join(base, "mod.rs")):
+        if os.path.isfile(candidate):
+            return candidate
+    if not module:
+        return os.path.join(SRC, "lib.rs")
+    return None
+
+
+def expand(tree):
+    """The paths of one `use` tree: `a::{b, c::{d, e}}` -> ['a::b', 'a::c::d', 'a::c::e']."""
+    tree = tree.strip()
+    depth, start = 0, None
+    for i, ch in enumerate(tree):
+        if ch == "{":
+            if depth == 0:
+                start = i
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+    if start is None:
+        return [tree]
+    prefix, inner = tree[:start], tree[start + 1:tree.rindex("}")]
+    parts, depth, current = [], 0, ""
+    for ch in inner:
+        if ch == "," and depth == 0:
+            parts.append(current)
+            current = ""
+            continue
+        depth += ch == "{"
+        depth -= ch == "}"
+        current += ch
+    parts.append(current)
+    paths = []
+    for part in parts:
+        if part.strip():
+            paths.extend(prefix + path for path in expand(part))
+    return paths
+
+
+def strip(text):
+    """The code of a file: comments (doc examples among them) and the contents of string and
+    character literals removed, so that only code is searched for paths."""
+    out, i, n = [], 0, len(text)
+    while i < n:
+        ch, two = text[i], text[i:i + 2]
+        if two == "//":
+            while i < n and text[i] != "\n":
+                i += 1
+        elif two == "/*":
+            depth = 0
+            while i < n:
+                if text[i:i + 2] == "/*":
+                    depth, i = depth + 1, i + 2
+                elif text[i:i + 2] == "*/":
+                    depth, i = depth - 1, i + 2
+                    if depth == 0:
+                        break
+                else:
+                    i += 1
+        elif ch == "r" and re.match(r'r#*"', text[i:]) and not (i and (text[i - 1].isalnum() or text[i - 1] == "_")):
+            hashes = re.match(r"r(#*)\"", text[i:]).group(1)
+            end = text.find('"' + hashes, i + 2 + len(hashes))
+            out.append('""')
+            i = n if end < 0 else end + 1 + len(hashes)
+        elif ch == '"':
+            i += 1
+            while i < n and text[i] != '"':
+                i += 2 if text[i] == "\\" else 1
+            out.append('""')
+            i += 1
+        elif ch == "'" and (text[i + 1:i + 2] == "\\" or text[i + 2:i + 3] == "'"):
+            end = text.find("'", i + 2 if text[i + 1] != "\\" else i + 3)
+            out.append("' '")
+            i = end + 1
+        else:
+            out.append(ch)
+            i += 1
+    return "".join(out)
+
+
+def imports(path):
+    """(module path imported, the text) for each reference to the crate's own items: `use`
+    statements, and paths written in the code (`crate::a::b(…)`, `super::c::D`)."""
+    code = strip(open(path, encoding="utf-8").read())
+    here = module_of(path)
+    statements = re.findall(r"\buse\s+([^;]+);", code)
+    rest = re.sub(r"\buse\s+[^;]+;", "", code)
+    paths = re.findall(r"\b(?:crate|super|self)(?:\s*::\s*\w+)+", rest)
+    found = []
+    for statement in statements + paths:
+        for item in expand(" ".join(statement.split())):
+            item = re.sub(r"\s+as\s+\w+$", "", item.strip())
+            names = [name for name in item.split("::") if name]
+            if not names:
+                continue
+            if names[0] == "crate":
+                module = names[1:]
+            elif names[0] in ("super", "self"):
+                module = list(here)
+                while names and names[0] in ("super", "self"):
+                    if names.pop(0) == "super":
+                        module = module[:-1]
+                module = module + names
+            else:
+                continue
+            found.append((module, item))
+    return found
+
+
+def resolve(module):
+    """The file of the longest prefix of `module` that is a file of the crate."""
+    for length in range(len(module), -1, -1):
+        target = file_of(module[:length])
+        if target:
+            return target
+    return None
+
+
+def main():
+    files = []
+    for directory, _, names in os.walk(SRC):
+        files.extend(os.path.join(directory, name) for name in names if name.endswith(".rs"))
+    edges = {path: {} for path in files}
+    failures = []
+    for path in sorted(files):
+        here = module_of(path)
+        for module, text in imports(path):
+            target = resolve(module)
+            if target is None or target == path:
+                continue
+            edges[path].setdefault(target, text)
+            if here[:1] == ["spring"]:
+                top = module_of(target)[:1]
+                if top and top[0] not in BELOW_SPRING | {"spring"}:
+                    failures.append(
+                        f"{os.path.relpath(path, SRC)} imports the feature `{top[0]}`: use {text}"
+                    )
+                elif target == os.path.join(SRC, "plugin.rs"):
+                    failures.append(
+                        f"{os.path.relpath(path, SRC)} imports the top-level plugin: use {text}"
+                    )
+    # Tarjan's strongly connected components.
+    index, low, stack, on_stack, components = {}, {}, [], set(), []
+    counter = [0]
+
+    def connect(node):
+        index[node] = low[node] = counter[0]
+        counter[0] += 1
+        stack.append(node)
+        on_stack.add(node)
+        for target in edges[node]:
+            if target not in index:
+                connect(target)
+                low[node] = min(low[node], low[target])
+            elif target in on_stack:
+                low[node] = min(low[node], index[target])
+        if low[node] == index[node]:
+            component = []
+            while True:
+                top = stack.pop()
+                on_stack.discard(top)
+                component.append(top)
+                if top == node:
+                    break
+            components.append(component)
+
+    sys.setrecursionlimit(10000)
+    for node in sorted(edges):
+        if node not in index:
+            connect(node)
+    for component in components:
+        if len(component) > 1:
+            members = set(component)
+            lines = [
+                f"  {os.path.relpath(a, SRC)} -> {os.path.relpath(b, SRC)}: use {text}"
+                for a in sorted(component)
+                for b, text in edges[a].items()
+                if b in members
+            ]
+            failures.append("files that import each other in a circle:\n" + "\n".join(lines))
+    if failures:
+        print("check_layers:\n" + "\n".join(failures), file=sys.stderr)
+        sys.exit(1)
+    count = sum(len(targets) for targets in edges.values())
+    print(f"check_layers: {len(files)} files, {count} imports between them, no circle; "
+          "spring/ imports no feature")
+
+
+if __name__ == "__main__":
+    main()
