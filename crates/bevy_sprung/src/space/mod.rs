@@ -22,8 +22,9 @@ pub use color::OklabColor;
 pub use length::{Length, Length2};
 pub use linear::{AffineSpace, Linear, LinearValue, NeverThroughZero};
 pub use rotation::{ShortestAngle, ShortestArc, rotation_vector};
+pub use vector::SpringVector;
 pub(crate) use vector::is_within_rest;
-pub use vector::{SpringVector, paired_increments};
+pub(crate) use vector::paired_increments;
 
 /// An offset carried between steps as an unevaluated sum `offset + remainder`, where the
 /// remainder holds what rounding dropped from `offset` (compensated summation).
@@ -177,28 +178,6 @@ pub trait SpringSpace: Send + Sync + 'static {
         Self::at_offset(target, offset.offset)
     }
 
-    /// Whether two values are the same (a spring writes a value only if it is not the same as
-    /// the one the property holds). `==` unless the space knows a cheaper exact test.
-    #[inline]
-    #[must_use]
-    fn same(a: Self::Value, b: Self::Value) -> bool {
-        a == b
-    }
-
-    /// Whether the property holds what the spring wrote for `offset` from `target`: then the
-    /// spring goes on from its own, carried offset (the value holds fewer digits than the
-    /// offset; keeping them is what makes springs arrive); otherwise something else wrote
-    /// `current`, and the spring starts over from [`offset`](Self::offset)`(current, target)`.
-    #[inline]
-    #[must_use]
-    fn is_written(
-        current: Self::Value,
-        target: Self::Value,
-        offset: Carried<Self::Offset>,
-    ) -> bool {
-        Self::at_carried(target, offset) == current
-    }
-
     /// The offset after the target moved from `old_target` to `new_target`, as a sum
     /// `(offset, remainder)` (see [`Carried`]), and the velocity. The default keeps the value
     /// where it is and the velocity as it is; a rotation re-expresses the velocity so that the
@@ -234,10 +213,45 @@ pub trait SpringSpace: Send + Sync + 'static {
         (after, velocity)
     }
 
+    /// The tolerances at which a spring in this space counts as at rest, in its units:
+    /// [`RestThreshold::DEFAULT`](sprung::RestThreshold::DEFAULT) (a thousandth of a unit, a
+    /// hundredth of a unit per second) unless the space says otherwise.
+    const DEFAULT_REST: sprung::RestThreshold<f32> = sprung::RestThreshold::<f32>::DEFAULT;
+
+    // The plugin's fast path, below: hidden from the docs, with defaults that are right for any
+    // space (from the maps above). A space of the plugin's overrides them with cheaper exact
+    // tests; they are not part of the public API: a custom space implements none of them, and
+    // they may change in any release.
+
+    /// Whether two values are the same (a spring writes a value only if it is not the same as
+    /// the one the property holds). `==` unless the space knows a cheaper exact test.
+    #[doc(hidden)]
+    #[inline]
+    #[must_use]
+    fn same(a: Self::Value, b: Self::Value) -> bool {
+        a == b
+    }
+
+    /// Whether the property holds what the spring wrote for `offset` from `target`: then the
+    /// spring goes on from its own, carried offset (the value holds fewer digits than the
+    /// offset; keeping them is what makes springs arrive); otherwise something else wrote
+    /// `current`, and the spring starts over from [`offset`](Self::offset)`(current, target)`.
+    #[doc(hidden)]
+    #[inline]
+    #[must_use]
+    fn is_written(
+        current: Self::Value,
+        target: Self::Value,
+        offset: Carried<Self::Offset>,
+    ) -> bool {
+        Self::at_carried(target, offset) == current
+    }
+
     /// [`constrain`](Self::constrain) in the plugin's usual step, which may leave the step to
     /// the general one (`None`, the state untouched) where constraining it is the uncommon
     /// case: the per-spring loop then holds no code for it. By default `constrain`'s result;
     /// [`NeverThroughZero`] leaves a step that may cross zero to the general step.
+    #[doc(hidden)]
     #[inline]
     #[must_use]
     fn constrain_usual(
@@ -251,14 +265,9 @@ pub trait SpringSpace: Send + Sync + 'static {
 
     /// Whether [`constrain_usual`](Self::constrain_usual) may leave a step to the general one
     /// (`false` by default; [`NeverThroughZero`] may). The usual step then tests whether
-    /// something else wrote the value together with the constraint, after the step: one
-    /// branch for both (3 instructions fewer a `UiScaleSpring`, callgrind). Otherwise it tests
-    /// it before the step, where the test waits on nothing (1 instruction fewer a translation
-    /// spring, 7 a UI translation's than testing it after).
+    /// something else wrote the value together with the constraint, after the step, in one
+    /// branch for both; otherwise it tests it before the step, where the test waits on
+    /// nothing.
+    #[doc(hidden)]
     const CONSTRAINS_USUAL_STEP: bool = false;
-
-    /// The tolerances at which a spring in this space counts as at rest, in its units:
-    /// [`RestThreshold::DEFAULT`](sprung::RestThreshold::DEFAULT) (a thousandth of a unit, a
-    /// hundredth of a unit per second) unless the space says otherwise.
-    const DEFAULT_REST: sprung::RestThreshold<f32> = sprung::RestThreshold::<f32>::DEFAULT;
 }

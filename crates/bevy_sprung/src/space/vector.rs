@@ -34,13 +34,19 @@ pub trait SpringVector:
     #[must_use]
     fn stop_at_zero(coordinates: Self, before: Self, after: [Self; 3]) -> [Self; 3];
 
+    // The plugin's fast path, below: hidden from the docs, with defaults that are right for any
+    // vector (from the methods above and `NormedVectorSpace`). The plugin's own vectors override
+    // them with shorter sequences of vector instructions, bit for bit the same results. They
+    // are not part of the public API: a custom vector implements none of them, and they may
+    // change in any release.
+
     /// Whether, with `c = coordinates`, every component of `c + before` and `c + after` has
     /// the same sign and none is zero: then [`stop_at_zero`](Self::stop_at_zero) changes
     /// nothing, and the usual step need not call it. Exact where both sums are finite (the
     /// usual step's are: its state is within the transition table's step limit); a component
     /// with an infinite or NaN sum may go either way. By default `false` (a step of a
-    /// [`NeverThroughZero`](super::NeverThroughZero) spring is then always the general one);
-    /// the built-in vectors test it, all components at once.
+    /// [`NeverThroughZero`](super::NeverThroughZero) spring is then always the general one).
+    #[doc(hidden)]
     #[inline]
     #[must_use]
     fn keeps_sign(coordinates: Self, before: Self, after: Self) -> bool {
@@ -51,22 +57,8 @@ pub trait SpringVector:
     /// Whether a state of `offset` and `velocity` steps on: it is not at rest (the squared
     /// lengths of both within their tolerances `rest_squared`), and each squared length is at
     /// most `limit` (a NaN is not). By default from [`NormedVectorSpace::norm_squared`] of
-    /// each; a vector may test both at once.
-    ///
-    /// # Example
-    /// ```
-    /// use bevy::math::Vec2;
-    /// use bevy_sprung::space::SpringVector;
-    ///
-    /// let rest = (0.01_f32.powi(2), 0.1_f32.powi(2));
-    /// // Moving, and in range.
-    /// assert!(Vec2::steps_on(Vec2::new(3.0, 4.0), Vec2::ZERO, rest, 1.0e30));
-    /// // At rest: both within their tolerances.
-    /// assert!(!Vec2::steps_on(Vec2::splat(0.001), Vec2::splat(0.01), rest, 1.0e30));
-    /// // Out of range (25 > 24), or NaN.
-    /// assert!(!Vec2::steps_on(Vec2::new(3.0, 4.0), Vec2::ZERO, rest, 24.0));
-    /// assert!(!Vec2::steps_on(Vec2::new(f32::NAN, 0.0), Vec2::ZERO, rest, 1.0e30));
-    /// ```
+    /// each.
+    #[doc(hidden)]
     #[inline]
     #[must_use]
     fn steps_on(offset: Self, velocity: Self, rest_squared: (f32, f32), limit: f32) -> bool {
@@ -75,19 +67,8 @@ pub trait SpringVector:
 
     /// What one step adds to an `offset` and a `velocity`, with a transition's increments
     /// `[d00, d01, d10, d11]` (its matrix less the identity): `offset·d00 + velocity·d01` and
-    /// `velocity·d11 + offset·d10`. By default with the vector's own arithmetic; a vector may
-    /// compute both at once.
-    ///
-    /// # Example
-    /// ```
-    /// use bevy::math::{Vec2, Vec4};
-    /// use bevy_sprung::space::SpringVector;
-    ///
-    /// let increments = Vec4::new(-0.5, 0.25, -2.0, -0.125);
-    /// let (moved, accelerated) = Vec2::step_increments(Vec2::X, Vec2::Y, increments);
-    /// assert_eq!(moved, Vec2::new(-0.5, 0.25));
-    /// assert_eq!(accelerated, Vec2::new(-2.0, -0.125));
-    /// ```
+    /// `velocity·d11 + offset·d10`. By default with the vector's own arithmetic.
+    #[doc(hidden)]
     #[inline]
     #[must_use]
     fn step_increments(offset: Self, velocity: Self, increments: Vec4) -> (Self, Self) {
@@ -98,26 +79,15 @@ pub trait SpringVector:
     /// [`step_paired_increments`](Self::step_paired_increments)): the table of transitions
     /// then also keeps them so, 32 bytes a slot instead of 16, for a vector that multiplies
     /// them without a shuffle. `false` by default.
+    #[doc(hidden)]
     const PAIRED_INCREMENTS: bool = false;
 
     /// [`step_increments`](Self::step_increments) with the increments as the pairs
-    /// `[d00, d00, d11, d11]` and `[d10, d10, d01, d01]` (see [`paired_increments`]): a
-    /// two-lane vector multiplies its state `[offset, velocity]` by the first, and by the
-    /// second with the halves of the product swapped. By default the increments are read back
-    /// out of the pairs for [`step_increments`](Self::step_increments).
-    ///
-    /// # Example
-    /// ```
-    /// use bevy::math::{Vec2, Vec4};
-    /// use bevy_sprung::space::{SpringVector, paired_increments};
-    ///
-    /// let increments = Vec4::new(-0.5, 0.25, -2.0, -0.125);
-    /// let (offset, velocity) = (Vec2::new(1.0, 3.0), Vec2::new(-2.0, 0.5));
-    /// assert_eq!(
-    ///     Vec2::step_paired_increments(offset, velocity, paired_increments(increments)),
-    ///     Vec2::step_increments(offset, velocity, increments),
-    /// );
-    /// ```
+    /// `[d00, d00, d11, d11]` and `[d10, d10, d01, d01]` (see `paired_increments`): a two-lane
+    /// vector multiplies its state `[offset, velocity]` by the first, and by the second with
+    /// the halves of the product swapped. By default the increments are read back out of the
+    /// pairs for [`step_increments`](Self::step_increments).
+    #[doc(hidden)]
     #[inline]
     #[must_use]
     fn step_paired_increments(
@@ -132,19 +102,9 @@ pub trait SpringVector:
 
 /// A transition's `increments` `[d00, d01, d10, d11]` as the pairs `[d00, d00, d11, d11]`
 /// and `[d10, d10, d01, d01]` that [`SpringVector::step_paired_increments`] reads.
-///
-/// # Example
-/// ```
-/// use bevy::math::Vec4;
-/// use bevy_sprung::space::paired_increments;
-///
-/// let [diagonal, cross] = paired_increments(Vec4::new(1.0, 2.0, 3.0, 4.0));
-/// assert_eq!(diagonal, Vec4::new(1.0, 1.0, 4.0, 4.0));
-/// assert_eq!(cross, Vec4::new(3.0, 3.0, 2.0, 2.0));
-/// ```
 #[inline]
 #[must_use]
-pub fn paired_increments(increments: Vec4) -> [Vec4; 2] {
+pub(crate) fn paired_increments(increments: Vec4) -> [Vec4; 2] {
     [increments.xxww(), increments.zzyy()]
 }
 
@@ -412,6 +372,45 @@ mod tests {
     use bevy::math::{Vec2, Vec3A, Vec4};
 
     use super::{SpringVector, paired_increments, step_increments_by_parts, stop_at_zero};
+
+    /// What the fast path's examples said: moving and in range steps on; at rest, out of
+    /// range or NaN does not; the increments multiply as the matrix says; the paired form gives
+    /// the same; the pairs are the increments reordered.
+    #[test]
+    fn the_fast_path_does_what_its_docs_say() {
+        let rest = (0.01_f32.powi(2), 0.1_f32.powi(2));
+        assert!(Vec2::steps_on(
+            Vec2::new(3.0, 4.0),
+            Vec2::ZERO,
+            rest,
+            1.0e30
+        ));
+        assert!(!Vec2::steps_on(
+            Vec2::splat(0.001),
+            Vec2::splat(0.01),
+            rest,
+            1.0e30
+        ));
+        assert!(!Vec2::steps_on(Vec2::new(3.0, 4.0), Vec2::ZERO, rest, 24.0));
+        assert!(!Vec2::steps_on(
+            Vec2::new(f32::NAN, 0.0),
+            Vec2::ZERO,
+            rest,
+            1.0e30
+        ));
+        let increments = Vec4::new(-0.5, 0.25, -2.0, -0.125);
+        let (moved, accelerated) = Vec2::step_increments(Vec2::X, Vec2::Y, increments);
+        assert_eq!(moved, Vec2::new(-0.5, 0.25));
+        assert_eq!(accelerated, Vec2::new(-2.0, -0.125));
+        let (offset, velocity) = (Vec2::new(1.0, 3.0), Vec2::new(-2.0, 0.5));
+        assert_eq!(
+            Vec2::step_paired_increments(offset, velocity, paired_increments(increments)),
+            Vec2::step_increments(offset, velocity, increments),
+        );
+        let [diagonal, cross] = paired_increments(Vec4::new(1.0, 2.0, 3.0, 4.0));
+        assert_eq!(diagonal, Vec4::new(1.0, 1.0, 4.0, 4.0));
+        assert_eq!(cross, Vec4::new(3.0, 3.0, 2.0, 2.0));
+    }
 
     /// Offsets and velocities at the edges: zeros of both signs, tiny, ordinary, huge (squares
     /// that overflow), infinite and NaN components.
