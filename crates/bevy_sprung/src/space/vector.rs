@@ -242,9 +242,8 @@ macro_rules! glam_vector {
             /// it), and the full test would change nothing. The usual case, tested on all
             /// lanes at once so that the step around it keeps its vector arithmetic (a product
             /// that underflows to 0 only sends it to the full test). No product `≤ 0`, against
-            /// a zero the loop keeps in a register: every product `> 0` took a fresh zero every
-            /// spring (1 instruction more a `UiScaleSpring`, callgrind). The two differ only
-            /// on a NaN product, which finite sums cannot give.
+            /// a zero the loop keeps in a register (every product `> 0` took a fresh zero every
+            /// spring). The two differ only on a NaN product, which finite sums cannot give.
             #[inline]
             fn keeps_sign(coordinates: Self, before: Self, after: Self) -> bool {
                 let (was, is) = (coordinates + before, coordinates + after);
@@ -261,8 +260,7 @@ glam_vector!(Vec2, {
     /// one): each square added to its neighbour's (`x + y` as `Vec2::length_squared` sums,
     /// and `y + x`, the same bits), so that the squared lengths come out in pairs without a
     /// shuffle of their own, compared with `[rest offset, limit, rest speed, limit]`, and the
-    /// four outcomes read as one bit of a constant (3 instructions fewer a `UiScaleSpring`
-    /// than the shared test, callgrind).
+    /// four outcomes read as one bit of a constant (shorter than the shared test).
     #[inline]
     fn steps_on(offset: Vec2, velocity: Vec2, rest_squared: (f32, f32), limit: f32) -> bool {
         let state = offset.extend(velocity.x).extend(velocity.y);
@@ -330,7 +328,7 @@ glam_vector!(Vec4, {
 });
 
 /// `[a.x, b.x, a.y, b.y]`: on x86-64 one `unpcklps`. (Built from the lanes, the compiler makes it
-/// of scalar moves instead: 3 instructions more a `Vec2` spring, callgrind.)
+/// of scalar moves instead.)
 #[inline]
 fn interleave_low(a: Vec4, b: Vec4) -> Vec4 {
     #[cfg(all(target_arch = "x86_64", target_feature = "sse"))]

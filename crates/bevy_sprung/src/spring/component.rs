@@ -1,8 +1,11 @@
 //! The spring component and its sleep marker.
 
 mod step;
+mod ticket;
 
-pub(crate) use step::{Stepped, UsualStep};
+use ticket::SlotTicket;
+
+pub(crate) use step::{Stepped, Transitions, Unchanged, Unusual, UsualStep};
 
 use core::any::TypeId;
 use core::fmt;
@@ -240,8 +243,7 @@ pub struct SpringMotion<P: SpringProperty> {
     offset: Carried<OffsetOf<P>>,
     /// The velocity in the offset's space: right after the offset (the last field of
     /// [`Carried`]; the fields are in declared order), so that a `Vec2` spring's state
-    /// `[offset, velocity]` is one 16-byte load (1 instruction a UI scale spring, 4 a UI
-    /// translation's, callgrind).
+    /// `[offset, velocity]` is one 16-byte load.
     velocity: OffsetOf<P>,
     /// The target the spring moved toward in its last step: a `target` that differs was set
     /// since (a retarget), and a hidden spring catches up under this one first. While nothing
@@ -258,53 +260,6 @@ pub struct SpringMotion<P: SpringProperty> {
     /// spring, its transition is one indexed load.
     #[reflect(ignore)]
     ticket: SlotTicket,
-}
-
-/// A spring's slot ticket or, where it has no slot, its time pending: a spring with time
-/// pending has none (its next visible step is the general one, which catches up), so one field
-/// holds either. That keeps the motion of a `Vec2` spring to 48 bytes, a multiple of 16, in
-/// which only the state load of one motion in four straddles two cache lines (about one of
-/// the usual step's 16-byte accesses in five did at 52 bytes); with the time in a field of its
-/// own, a `UiScaleSpring` stepped 7–8% slower, a `UiTransformTranslation` spring (60 bytes
-/// then, 56 now) 6–7% (same instructions; fastest frames, 100 000 springs).
-///
-/// Two `u32` halves, aligned to 4 bytes (not padding a `Vec2` or `f32` spring's motion to 8),
-/// read as one 8-byte load: a slot's ticket, or with the high half all ones (tickets from
-/// [`TransitionTable::NO_TICKET`] up, which the table never hands out) the bits of the time
-/// pending in the low half.
-#[derive(Clone, Copy)]
-struct SlotTicket([u32; 2]);
-
-impl SlotTicket {
-    /// The ticket of a slot (below [`TransitionTable::NO_TICKET`]).
-    #[inline]
-    fn slot(ticket: u64) -> Self {
-        // The low and the high half.
-        #[expect(clippy::cast_possible_truncation, reason = "split in halves")]
-        Self([ticket as u32, (ticket >> 32) as u32])
-    }
-
-    /// No slot, and `seconds` pending.
-    #[inline]
-    fn pending(seconds: f32) -> Self {
-        Self([seconds.to_bits(), u32::MAX])
-    }
-
-    /// The ticket: a slot's, or from [`TransitionTable::NO_TICKET`] up, no slot's.
-    #[inline]
-    fn get(self) -> u64 {
-        u64::from(self.0[0]) | (u64::from(self.0[1]) << 32)
-    }
-
-    /// The time pending: 0 where the spring has a slot.
-    #[inline]
-    fn time_pending(self) -> f32 {
-        if self.0[1] == u32::MAX {
-            f32::from_bits(self.0[0])
-        } else {
-            0.0
-        }
-    }
 }
 
 impl<P: SpringProperty> Default for SpringMotion<P> {

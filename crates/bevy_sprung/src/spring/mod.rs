@@ -16,6 +16,7 @@ mod systems;
 mod table;
 #[cfg(test)]
 mod tests;
+mod ticks;
 
 pub use component::{
     PropertySpring, SpringAsleep, SpringInputError, SpringMotion, SpringTargetMut,

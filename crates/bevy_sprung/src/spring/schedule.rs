@@ -32,8 +32,8 @@ pub struct SpringSystems;
 /// outer schedule runs beside it while the springs step (they step on the compute pool's
 /// threads themselves). The schedule runs on Bevy's single-threaded executor: its systems run
 /// one after another in any case (properties in order, each property's systems chained), and
-/// handing each to a task cost more than the systems of a scene at rest (a frame of 100 000
-/// sleeping springs took 40 µs on the multi-threaded executor, 12 µs on this one). Systems of
+/// handing each to a task cost more than the systems of a scene at rest (several times what a
+/// frame of sleeping springs costs on this one). Systems of
 /// your own added here run on the calling thread too; `par_iter` still uses the compute pool.
 ///
 /// # Example

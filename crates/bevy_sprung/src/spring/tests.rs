@@ -8,7 +8,7 @@ use proptest::prelude::*;
 use sprung::{RestThreshold, Scalar, Spring, SpringState};
 
 use super::cache::TransitionCache;
-use super::component::{PropertySpring, SpringMotion, Stepped};
+use super::component::{PropertySpring, SpringMotion, Stepped, Transitions};
 use super::table::TransitionTable;
 use crate::clock::FrameSteps;
 use crate::space::{Linear, NeverThroughZero};
@@ -84,11 +84,15 @@ fn step_frame<P: crate::property::SpringProperty, C: core::ops::DerefMut<Target 
     (spring, motion): (&mut PropertySpring<P>, &mut SpringMotion<P>),
     component: &mut C,
     steps: FrameSteps,
-    hidden: bool,
+    skipping: bool,
     (table, cache): (&mut TransitionTable, &mut TransitionCache),
 ) -> Stepped {
     table.prepare(steps);
-    let stepped = motion.step_on(spring, component, steps, hidden, (&*table, cache));
+    let transitions = Transitions {
+        table: &*table,
+        cache,
+    };
+    let stepped = motion.step_on(spring, component, steps, skipping, transitions);
     table.finish(1);
     stepped
 }

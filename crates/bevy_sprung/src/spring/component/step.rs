@@ -63,7 +63,7 @@ pub(crate) enum Stepped {
     Moving,
     /// It reached rest and was snapped onto its target.
     Settled,
-    /// It is hidden: the time was put aside for a later exact catch-up.
+    /// It skips the frame: the time was put aside for a later exact catch-up.
     Deferred,
 }
 
@@ -114,97 +114,119 @@ fn moving_step<V: SpringVector>(
     )
 }
 
+/// What Bevy's change ticks say of a spring since its last step, so that its usual step need
+/// not read it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Unchanged {
+    /// Nothing but the stepping system changed the spring's configuration: the usual step
+    /// then needs none of it (its slot's ticket is in its motion).
+    pub(crate) config: bool,
+    /// Nothing but the spring wrote its property: its value is what the spring wrote, and is
+    /// not compared with it.
+    pub(crate) property: bool,
+}
+
+/// What the unusual step is told of how a spring came to it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Unusual {
+    /// The spring skips this frame (its time is put aside for one exact step later).
+    pub(crate) skipping: bool,
+    /// The usual step found the spring's slot, and declined for its state or its value.
+    pub(crate) slot_found: bool,
+}
+
+/// The transitions a spring's step reads: the property's table of this frame, and a cache of
+/// the transitions the step computes itself (retargets, catch-up, unusual time steps).
+pub(crate) struct Transitions<'a> {
+    /// The table of every distinct spring's transition over this frame.
+    pub(crate) table: &'a TransitionTable,
+    /// Transitions computed for this thread, kept across frames.
+    pub(crate) cache: &'a mut TransitionCache,
+}
+
 impl<P: SpringProperty> SpringMotion<P> {
     /// One frame of the spring over `dt` on a component, writing its property if it changed
-    /// (through a `Mut`, a write is a change).
+    /// (through a `Mut`, a write is a change). `skipping`: the frame is put aside for later.
     #[inline]
     pub(crate) fn step_on<C: DerefMut<Target = P::Component>>(
         &mut self,
         config: &mut PropertySpring<P>,
         component: &mut C,
         steps: FrameSteps,
-        hidden: bool,
-        (table, cache): (&TransitionTable, &mut TransitionCache),
+        skipping: bool,
+        transitions: Transitions,
     ) -> Stepped {
-        let frame = self.step(
-            config,
-            P::get(&**component),
-            steps,
-            hidden,
-            false,
-            (table, cache),
-        );
+        let frame = self.step(config, P::get(&**component), steps, skipping, transitions);
         if let Some(value) = frame.write {
             P::set(&mut **component, value);
         }
         frame.outcome
     }
 
-    /// One frame of the spring configured by `config` (`hidden`: nobody sees it, defer) from
-    /// the property's `current` value: the new value, only if it changed. `untouched`: nothing
-    /// changed `config` since the spring's last step (Bevy's change ticks say so); it is then
-    /// not read.
-    ///
-    /// The common case — an untouched spring — finds its transition in its slot of the
-    /// property's [`TransitionTable`] and is straight-line, a handful of vector instructions.
-    /// Every other case goes out of line from the same, untouched state: a spring that was
-    /// touched first checks that its step is still the usual one (the target of its last step,
-    /// no moving target, no time pending) and finds its slot; a state at rest or too large for
-    /// the table's [`step_limit`](TransitionTable::step_limit) (which covers NaN) steps the
-    /// general way (a state at rest settles there, without a step).
+    /// One frame of the spring configured by `config` from the property's `current` value
+    /// (`skipping`: put aside for later), reading everything: the new value, only if it
+    /// changed. The stepping system's own loop takes the usual step
+    /// ([`step_usual`](Self::step_usual)) first, which reads nothing it need not; this is the
+    /// step for springs it does not loop over (reduced motion, frames skipped).
     #[inline]
     pub(crate) fn step(
         &mut self,
         config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         steps: FrameSteps,
-        hidden: bool,
-        untouched: bool,
-        (table, cache): (&TransitionTable, &mut TransitionCache),
+        skipping: bool,
+        transitions: Transitions,
     ) -> Frame<ValueOf<P>> {
-        let looked_up = untouched & !hidden;
-        match self
-            .step_usual(current, (looked_up, false), table.prepared())
-            .frame()
-        {
-            Some(frame) => frame,
-            None => self.step_unusual(config, current, steps, (hidden, looked_up), (table, cache)),
-        }
+        let unusual = Unusual {
+            skipping,
+            slot_found: false,
+        };
+        self.step_unusual(config, current, steps, unusual, transitions)
     }
 
-    /// [`step`](Self::step)'s common case, which needs neither the configuration nor a
-    /// transition of its own: for a spring that is `untouched` (and visible), its ticket finds
-    /// its increments in the table `prepared` for this frame, and the spring keeps moving (and
-    /// this is the value to write, if it changed); otherwise the step is declined (the state
-    /// untouched) for [`step_unusual`](Self::step_unusual) to do. `unwritten`: nothing but
-    /// this spring wrote the property since its last step (its change tick says so), so
-    /// `current` is what the spring wrote and is not compared with it.
+    /// The common case, which needs neither the configuration nor a transition of its own: for
+    /// a spring whose configuration is `unchanged`, its ticket finds its increments in the
+    /// table `prepared` for this frame, and the spring keeps moving (and this is the value to
+    /// write, if it changed); otherwise the step is declined (the state untouched) for
+    /// [`step_unusual`](Self::step_unusual) to do. A property `unchanged` holds what the spring
+    /// wrote, and `current` is not compared with it.
+    ///
+    /// It is straight-line, a handful of vector instructions. Every other case goes out of line
+    /// from the same, untouched state: a spring that was touched first checks that its step is
+    /// still the usual one (the target of its last step, no moving target, no time pending)
+    /// and finds its slot; a state at rest or too large for the table's
+    /// [`step_limit`](TransitionTable::step_limit) (which covers NaN) steps the general way (a
+    /// state at rest settles there, without a step).
     #[expect(
         clippy::inline_always,
-        reason = "the per-entity loop's hot path: measured 60 instructions per spring cheaper \
-                  inlined into it than called"
+        reason = "the per-entity loop's hot path: measured cheaper inlined into it than called"
     )]
     #[inline(always)]
     pub(crate) fn step_usual(
         &mut self,
         current: ValueOf<P>,
-        (untouched, unwritten): (bool, bool),
+        unchanged: Unchanged,
         prepared: PreparedIncrements,
     ) -> UsualStep<ValueOf<P>> {
-        let found = if untouched {
+        let found = if unchanged.config {
             prepared.increments::<OffsetOf<P>>(self.ticket())
         } else {
             None
         };
         match found {
-            Some(increments) => self.step_by(increments, current, unwritten, prepared.step_limit()),
+            Some(increments) => self.step_by(
+                increments,
+                current,
+                unchanged.property,
+                prepared.step_limit(),
+            ),
             None => UsualStep::Declined,
         }
     }
 
     /// The usual step by `increments` from the property's `current` value, or declined (the
     /// state untouched) where the value was written by something else (not tested where it is
-    /// `unwritten`), the state is at rest or above the table's step `limit`.
+    /// known `unwritten`), the state is at rest or above the table's step `limit`.
     #[expect(
         clippy::inline_always,
         reason = "the per-entity loop's hot path (see `step_usual`)"
@@ -226,9 +248,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         // the offset is always the carried one, and its sum with the target is shared with
         // the step's own. A space whose step may be declined after it tests this then too, in
         // the same branch (`SpringSpace::CONSTRAINS_USUAL_STEP`). Where the change tick
-        // already says that nothing else wrote it, the test is left out (callgrind, net of
-        // the block test: 2 instructions of a `Vec2` spring's 63, 9 of a translation's 89,
-        // 22 of a `Val2` one's 110).
+        // already says that nothing else wrote it, the test is left out.
         let written = unwritten || P::Space::is_written(current, target, before);
         let (written_now, written_after) = if P::Space::CONSTRAINS_USUAL_STEP {
             (true, written)
@@ -236,8 +256,8 @@ impl<P: SpringProperty> SpringMotion<P> {
             (written, true)
         };
         // Rest, and range, are tested on the state the step starts from: the test then waits
-        // on nothing the step computes, and the two run side by side (8% faster on two cores
-        // than testing the result). A spring settles the frame after its state came within
+        // on nothing the step computes, and the two run side by side (faster than testing the
+        // result). A spring settles the frame after its state came within
         // its tolerances. Within the table's limit (a NaN is not), the step's result is finite
         // and of finite squared length: it needs no test of its own.
         if !(written_now & SpringVector::steps_on(y, v, self.rest_squared, limit)) {
@@ -268,15 +288,17 @@ impl<P: SpringProperty> SpringMotion<P> {
         config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         steps: FrameSteps,
-        (hidden, looked_up): (bool, bool),
-        (table, cache): (&TransitionTable, &mut TransitionCache),
+        unusual: Unusual,
+        transitions: Transitions,
     ) -> Frame<ValueOf<P>> {
-        // A spring whose increments the usual step found (`looked_up`: it looked) was declined
-        // for its state, or for its value: the general step. One that was touched (or whose
-        // table was cleared) may still step the usual way, from its slot.
-        let found = looked_up && table.increments(self.ticket()).is_some();
+        // A spring whose increments the usual step found was declined for its state, or for
+        // its value: the general step. One that was touched (or whose table was cleared) may
+        // still step the usual way, from its slot.
+        let table = transitions.table;
+        let found = unusual.slot_found && table.increments(self.ticket()).is_some();
         if !found
-            && let Some(increments) = self.touched_increments(config, &steps, hidden, table)
+            && let Some(increments) =
+                self.touched_increments(config, &steps, unusual.skipping, table)
             && let Some(frame) = self
                 .step_by(increments, current, false, table.step_limit())
                 .frame()
@@ -284,7 +306,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             return frame;
         }
         let dt = steps.dt(config.clock);
-        let frame = self.step_general(config, current, dt, hidden, (table, cache));
+        let frame = self.step_general(config, current, dt, unusual.skipping, transitions);
         self.clear_ticket();
         frame
     }
@@ -300,12 +322,12 @@ impl<P: SpringProperty> SpringMotion<P> {
         current: ValueOf<P>,
         steps: FrameSteps,
         preference: ReducedMotion,
-        (table, cache): (&TransitionTable, &mut TransitionCache),
+        transitions: Transitions,
     ) -> Frame<ValueOf<P>> {
         let dt = steps.dt(config.clock);
         self.clear_ticket();
         if preference == ReducedMotion::Snap {
-            self.repair(config, current, table);
+            self.repair(config, current, transitions.table);
             let target = config.target;
             self.active_target = target;
             self.offset = Carried::new(OffsetOf::<P>::ZERO);
@@ -324,7 +346,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         }
         let spring = config.spring;
         config.spring = preference.spring(spring);
-        let frame = self.step_general(config, current, preference.dt(dt), false, (table, cache));
+        let frame = self.step_general(config, current, preference.dt(dt), false, transitions);
         config.spring = spring;
         frame
     }
@@ -336,11 +358,11 @@ impl<P: SpringProperty> SpringMotion<P> {
         &mut self,
         config: &PropertySpring<P>,
         steps: &FrameSteps,
-        hidden: bool,
+        skipping: bool,
         table: &TransitionTable,
     ) -> Option<SlotIncrements<OffsetOf<P>>> {
         let clock = FrameSteps::index(config.clock);
-        let ticket = self.usual_slot(config, steps.of(clock), clock, hidden, table)?;
+        let ticket = self.usual_slot(config, steps.of(clock), clock, skipping, table)?;
         table.prepared().increments::<OffsetOf<P>>(ticket)
     }
 
@@ -353,10 +375,10 @@ impl<P: SpringProperty> SpringMotion<P> {
         config: &PropertySpring<P>,
         dt: f32,
         clock: u8,
-        hidden: bool,
+        skipping: bool,
         table: &TransitionTable,
     ) -> Option<u64> {
-        let usual = !hidden
+        let usual = !skipping
             & (dt > 0.0)
             & (self.pending() == 0.0)
             & (config.target == self.active_target)
@@ -388,13 +410,14 @@ impl<P: SpringProperty> SpringMotion<P> {
         config: &mut PropertySpring<P>,
         current: ValueOf<P>,
         dt: f32,
-        hidden: bool,
-        (table, cache): (&TransitionTable, &mut TransitionCache),
+        skipping: bool,
+        transitions: Transitions,
     ) -> Frame<ValueOf<P>> {
+        let Transitions { table, cache } = transitions;
         self.repair(config, current, table);
         let target = config.target;
         let retargeted = target != self.active_target;
-        if hidden && !retargeted {
+        if skipping && !retargeted {
             self.set_pending(self.pending() + dt);
             return Frame {
                 outcome: Stepped::Deferred,
@@ -417,7 +440,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             );
         }
         let mut velocity = self.velocity;
-        // Catch up the hidden time under the target that was in effect, then retarget.
+        // Catch up the time skipped under the target that was in effect, then retarget.
         let pending = self.pending();
         if pending > 0.0 {
             self.set_pending(0.0);
