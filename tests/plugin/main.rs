@@ -16,6 +16,7 @@ mod chaos;
 mod choreography;
 mod clocks;
 mod disabling;
+mod first_hour;
 mod follow;
 mod interaction;
 mod juice;

@@ -23,7 +23,7 @@ use bevy::prelude::*;
 use crate::property::SpringProperty;
 use crate::spring::{
     PropertySpring, PropertySystems, SpringAsleep, SpringPhase, SpringSystems, SpringUpdate,
-    add_systems_on_first_use, spring_schedule,
+    add_systems_on_first_use, spring_schedule, warn_missing,
 };
 
 /// Group completion ([`SpringGroup`]) and the choreography types (part of
@@ -63,6 +63,16 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     app.register_type::<SpringSequence<P>>()
         .add_observer(group::note_woken::<P>);
     let sequences = [TypeId::of::<SpringSequence<P>>()];
+    let outer = spring_schedule(app);
+    add_systems_on_first_use(app, &sequences, outer, |schedule| {
+        schedule.add_systems(
+            warn_missing::<SpringSequence<P>, PropertySpring<P>>(
+                "the sequence drives that spring and does nothing without it; add the spring",
+            )
+            .before(SpringSystems)
+            .run_if(any_with_component::<SpringSequence<P>>),
+        );
+    });
     add_systems_on_first_use(app, &sequences, SpringUpdate, |schedule| {
         schedule.add_systems(
             systems::drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>

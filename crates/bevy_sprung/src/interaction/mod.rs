@@ -34,7 +34,8 @@ use bevy::prelude::*;
 use crate::control::SpringControl;
 use crate::property::{SpringProperty, ValueOf};
 use crate::spring::{
-    PropertySpring, PropertySystems, SpringPhase, SpringUpdate, add_systems_on_first_use, first_use,
+    PropertySpring, PropertySystems, SpringPhase, SpringSystems, SpringUpdate,
+    add_systems_on_first_use, first_use, spring_schedule, warn_missing,
 };
 
 /// How a pointer is interacting with an entity, kept up to date from `bevy_picking`'s pointer
@@ -454,6 +455,17 @@ fn retarget_on_interaction<P, C>(
 pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     app.register_type::<InteractionTargets<P>>();
     let targets = [core::any::TypeId::of::<InteractionTargets<P>>()];
+    let outer = spring_schedule(app);
+    add_systems_on_first_use(app, &targets, outer, |schedule| {
+        schedule.add_systems(
+            warn_missing::<InteractionTargets<P>, PropertySpring<P>>(
+                "the pointer states retarget that spring and do nothing without it; add the \
+                 spring",
+            )
+            .before(SpringSystems)
+            .run_if(any_with_component::<InteractionTargets<P>>),
+        );
+    });
     add_systems_on_first_use(app, &targets, SpringUpdate, |schedule| {
         schedule.add_systems(
             retarget_on_interaction::<P, PropertySpring<P>>

@@ -106,8 +106,9 @@ pub struct PropertySpring<P: SpringProperty> {
 
 impl<P: SpringProperty> PropertySpring<P> {
     /// The component hook: the first spring on `P` brings in the property's systems.
-    fn on_add(mut world: DeferredWorld, _: HookContext) {
-        super::first_use::spring_added(&mut world, TypeId::of::<Self>());
+    fn on_add(mut world: DeferredWorld, context: HookContext) {
+        let property = (context.entity, P::short_type_path());
+        super::first_use::spring_added(&mut world, TypeId::of::<Self>(), property);
     }
 
     /// The component hook: a spring inserted (or replaced, or inserted again after it was

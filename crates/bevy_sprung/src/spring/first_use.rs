@@ -25,6 +25,11 @@ pub(crate) struct FirstUse {
     in_use: Vec<TypeId>,
     /// The schedule [`install_ready_systems`] was put in as a system, if it was needed.
     installer: Option<Interned<dyn ScheduleLabel>>,
+    /// The spring component types whose property was added (`PropertySpring<P>` of each
+    /// registered `P`).
+    properties: Vec<TypeId>,
+    /// Those not added that a spring was told about (once each).
+    told: Vec<TypeId>,
 }
 
 impl FirstUse {
@@ -81,11 +86,35 @@ fn component_used(world: &mut DeferredWorld, used: TypeId) {
     }
 }
 
-/// The hook of a spring component (of type `spring`) being added: the first one brings in its
-/// property's systems (and the first on any property the runner of [`SpringUpdate`]).
-pub(crate) fn spring_added(world: &mut DeferredWorld, spring: TypeId) {
+/// The hook of a spring component (of type `spring`, on `entity`, for the property named
+/// `property`) being added: the first one brings in its property's systems (and the first on
+/// any property the runner of [`SpringUpdate`]). A spring on a property no plugin added is told
+/// once: nothing would ever step it.
+pub(crate) fn spring_added(
+    world: &mut DeferredWorld,
+    spring: TypeId,
+    (entity, property): (Entity, &'static str),
+) {
     component_used(world, spring);
     component_used(world, any_spring());
+    if let Some(mut bookkeeping) = world.get_resource_mut::<FirstUse>()
+        && !bookkeeping.properties.contains(&spring)
+        && !bookkeeping.told.contains(&spring)
+    {
+        bookkeeping.told.push(spring);
+        warn!(
+            "bevy_sprung: {entity} has a spring on {property}, a property no plugin added: it \
+             will not move. Add `SpringPropertyPlugin::<{property}>::default()` to the app"
+        );
+    }
+}
+
+/// The spring component `spring` (a `PropertySpring<P>`) has its property's systems.
+pub(crate) fn property_added(app: &mut App, spring: TypeId) {
+    let mut bookkeeping = app.world_mut().get_resource_or_init::<FirstUse>();
+    if !bookkeeping.properties.contains(&spring) {
+        bookkeeping.properties.push(spring);
+    }
 }
 
 /// Runs `systems` on `schedule` once a component of any of `types` (component types) exists:

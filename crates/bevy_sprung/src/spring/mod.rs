@@ -7,6 +7,7 @@ mod cache;
 mod component;
 mod event;
 mod first_use;
+mod misconfigured;
 mod parallel;
 mod plugin;
 mod preference;
@@ -29,4 +30,5 @@ pub use skip::SkipFrames;
 
 pub(crate) use event::trigger_if_alive;
 pub(crate) use first_use::{add_property_systems, add_systems_on_first_use, first_use};
+pub(crate) use misconfigured::warn_missing;
 pub(crate) use plugin::{is_registered, spring_schedule};

@@ -15,7 +15,10 @@ use bevy::transform::TransformSystems;
 
 use super::component::{PropertySpring, SpringAsleep, SpringMotion};
 use super::first_use::{FirstUse, install_ready_systems};
-use super::first_use::{add_property_systems, add_systems_on_first_use, any_spring};
+use super::first_use::{
+    add_property_systems, add_systems_on_first_use, any_spring, property_added,
+};
+use super::misconfigured::warn_missing;
 use super::schedule::{PropertySystems, SpringPhase, SpringSystems, SpringUpdate};
 use super::systems::{step_springs, wake_springs};
 use crate::clock::SpringClockPlugin;
@@ -181,11 +184,9 @@ impl<P: SpringProperty> Plugin for PropertyStepPlugin<P> {
                 PropertySystems::<P>::default().after(previous),
             );
         }
-        add_property_systems(
-            app,
-            &[TypeId::of::<PropertySpring<P>>()],
-            add_systems_of::<P>,
-        );
+        let spring = TypeId::of::<PropertySpring<P>>();
+        property_added(app, spring);
+        add_property_systems(app, &[spring], add_systems_of::<P>);
     }
 
     /// Marks a spring changed when its entity is enabled again, also for the disabling
@@ -246,10 +247,15 @@ fn touch_on_return<P: SpringProperty>(returning: On<Remove>, mut world: Deferred
     }
 }
 
-/// The systems of property `P`, added with its first spring.
+/// The systems of property `P`, added with its first spring: a spring added without the
+/// component it moves is told once; the springs wake and step.
 fn add_systems_of<P: SpringProperty>(schedule: &mut Schedule) {
+    let missing = warn_missing::<PropertySpring<P>, P::Component>(
+        "the spring moves nothing until the entity has that component; spawn the spring with \
+         it (the component's default is where the spring starts from)",
+    );
     schedule.add_systems(
-        (wake_springs::<P>, step_springs::<P>)
+        (missing, wake_springs::<P>, step_springs::<P>)
             .chain()
             .run_if(any_with_component::<PropertySpring<P>>)
             .in_set(PropertySystems::<P>::phase(SpringPhase::Step)),

@@ -1,0 +1,28 @@
+//! Misconfigurations a new user meets, each told once with its fix: a spring on an entity
+//! without the component it moves, a spring whose property was never added, a feature's
+//! component without the spring it drives.
+
+use bevy::prelude::*;
+use bevy::utils::prelude::ShortName;
+
+/// A system that warns once about the entities that got a `C` (since it last ran) but have no
+/// `R`, naming the first such entity, both components and `fix`. Run where the entity's
+/// commands have been applied (a later schedule than the one that spawned it), so that a
+/// component inserted in a second command is not missed.
+pub(crate) fn warn_missing<C: Component, R: Component>(
+    fix: &'static str,
+) -> impl FnMut(Query<Entity, (Added<C>, Without<R>)>, Local<bool>) {
+    move |missing, mut warned| {
+        if *warned {
+            return;
+        }
+        if let Some(entity) = missing.iter().next() {
+            *warned = true;
+            warn!(
+                "bevy_sprung: {entity} has a {} but no {}: {fix}",
+                ShortName::of::<C>(),
+                ShortName::of::<R>()
+            );
+        }
+    }
+}
