@@ -518,3 +518,92 @@ fn a_spring_curve_is_the_closed_form() {
     }
     assert_eq!(easing.ease(1.0), 1.0);
 }
+
+/// What a toast does over time: when it is first visually there (within half a pixel of where
+/// it shows, slowly), and when its target leaves for the exit.
+fn toast_timing(sequence: SpringSequence<Translation>) -> (f64, f64) {
+    let mut app = app(60);
+    let (shown, hidden) = (Vec3::new(0.0, 40.0, 0.0), Vec3::new(0.0, -80.0, 0.0));
+    let toast = app
+        .world_mut()
+        .spawn((
+            Transform::from_translation(hidden),
+            TranslationSpring::new(Spring::snappy(), hidden),
+            sequence,
+        ))
+        .id();
+    let omega: f32 = Spring::snappy().natural_frequency();
+    let (mut there, mut left) = (None, None);
+    for _ in 0..600 {
+        app.update();
+        let (position, velocity) = (
+            translation(&app, toast),
+            motion::<Translation>(&app, toast).velocity(),
+        );
+        if there.is_none() && position.distance(shown) <= 0.5 && velocity.length() <= 0.5 * omega {
+            there = Some(elapsed(&app));
+        }
+        if left.is_none() && translation_spring(&app, toast).target() == hidden && there.is_some() {
+            left = Some(elapsed(&app));
+        }
+    }
+    (there.unwrap(), left.unwrap())
+}
+
+/// A toast that "stays 2 s" stays 2 s: `then_within` moves on when the toast is visually there,
+/// and `hold` keeps it there for its time; a step that waits for the strict settle holds it
+/// noticeably longer than asked.
+#[test]
+fn a_hold_after_a_step_within_a_distance_lasts_its_time_on_screen() {
+    let (shown, hidden) = (Vec3::new(0.0, 40.0, 0.0), Vec3::new(0.0, -80.0, 0.0));
+    let frame = 1.0 / 60.0;
+    let (there, left) = toast_timing(
+        SpringSequence::new()
+            .then_within(0.5, shown)
+            .hold(2.0)
+            .then(hidden),
+    );
+    // Seen the frame after it is there (the sequence reads the last step's state), and moved
+    // on the frame its time is up: within three frames.
+    let on_screen = left - there;
+    assert!(
+        (on_screen - 2.0).abs() <= 3.0 * frame,
+        "stayed {on_screen:.3} s"
+    );
+    let (there, left) = toast_timing(SpringSequence::new().then(shown).hold(2.0).then(hidden));
+    let on_screen = left - there;
+    assert!(on_screen > 2.2, "on settle: stayed {on_screen:.3} s");
+}
+
+/// A hold first waits before the sequence starts, as a delay does.
+#[test]
+fn a_first_hold_is_a_delay() {
+    let sequence = SpringSequence::<Translation>::new().hold(0.5).then(Vec3::X);
+    assert_eq!(sequence.steps().len(), 1);
+    let delayed = SpringSequence::<Translation>::new()
+        .delayed(0.5)
+        .then(Vec3::X);
+    let (mut a, mut b) = (app(60), app(60));
+    let one = a
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::snappy(), Vec3::ZERO),
+            sequence,
+        ))
+        .id();
+    let two = b
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::snappy(), Vec3::ZERO),
+            delayed,
+        ))
+        .id();
+    for _ in 0..120 {
+        a.update();
+        b.update();
+        assert_eq!(translation(&a, one), translation(&b, two));
+    }
+    assert!(translation(&a, one).x > 0.5);
+}

@@ -13,6 +13,8 @@ use crate::property::{OffsetOf, SpringProperty, ValueOf};
 pub trait SpringControl<P: SpringProperty>: Component<Mutability = Mutable> {
     /// Where the spring is heading.
     fn target(&self) -> ValueOf<P>;
+    /// The spring's parameters.
+    fn parameters(&self) -> Spring<f32>;
     /// Retargets the spring, keeping its velocity (a non-finite target is refused).
     fn retarget(&mut self, target: ValueOf<P>);
     /// Changes the spring's parameters.

@@ -20,6 +20,13 @@ pub enum Advance {
     After(f32),
     /// Whichever comes first: settled, or this many seconds.
     OnSettleOrAfter(f32),
+    /// When the spring is visually there: within this distance of the step's target, in the
+    /// property's units (the length of its offset: pixels for a UI length, radians for a
+    /// rotation), and slow enough not to leave it again (its speed at most the distance times
+    /// the spring's natural frequency). Half a pixel is a UI's "there"; the spring settles on
+    /// the target afterwards as always, while the sequence goes on. A step that only waits for
+    /// [`OnSettle`](Self::OnSettle) also waits out the last, invisible part of the motion.
+    Within(f32),
 }
 
 /// How many times a sequence plays its steps.
@@ -98,6 +105,13 @@ pub enum SequencePhase {
 /// something else sets the spring's target mid-way the sequence is interrupted: cancelled or
 /// paused as chosen ([`OnInterrupt`]), triggering
 /// [`SequenceInterrupted<P>`](super::SequenceInterrupted).
+///
+/// A step moves on when the spring has settled ([`then`](Self::then)), after a time
+/// ([`then_after`](Self::then_after)), as soon as it is visually there
+/// ([`then_within`](Self::then_within) a distance, so that what follows starts when the motion
+/// looks done rather than after its last, invisible part), or at whichever of settling and a
+/// time comes first ([`step`](Self::step) with [`Advance::OnSettleOrAfter`]);
+/// [`hold`](Self::hold) stays on the last target for a time.
 ///
 /// A sequence with a delay is how a single spring starts late; the same sequence with
 /// [`staggered`](Self::staggered) delays makes a group of entities start one after another.
@@ -231,6 +245,41 @@ impl<P: SpringProperty> SpringSequence<P> {
         self.step(target, Advance::After(seconds))
     }
 
+    /// A step to `target`, moving on as soon as the spring is visually there: within
+    /// `distance` of it ([`Advance::Within`]). With [`hold`](Self::hold) after it, the hold
+    /// starts when the motion looks done.
+    ///
+    /// # Example
+    /// ```
+    /// use bevy::prelude::*;
+    /// use bevy_sprung::prelude::*;
+    ///
+    /// // A toast that slides in, stays 2 s once it is there, and slides out.
+    /// let toast = SpringSequence::<Translation>::new()
+    ///     .then_within(0.5, Vec3::new(0.0, 40.0, 0.0))
+    ///     .hold(2.0)
+    ///     .then(Vec3::new(0.0, -80.0, 0.0));
+    /// assert_eq!(toast.steps().len(), 3);
+    /// ```
+    #[must_use]
+    pub fn then_within(self, distance: f32, target: ValueOf<P>) -> Self {
+        self.step(target, Advance::Within(distance))
+    }
+
+    /// Stays where the last step went for `seconds` (from when that step moved on), before the
+    /// next step: a step to the same target that moves on after `seconds`. As the first step
+    /// it waits before the sequence starts, as [`delayed`](Self::delayed) does.
+    #[must_use]
+    pub fn hold(mut self, seconds: f32) -> Self {
+        if let Some(last) = self.steps.last() {
+            let target = last.target;
+            self.step(target, Advance::After(seconds))
+        } else {
+            self.delay += seconds.max(0.0);
+            self
+        }
+    }
+
     /// A step to `target`, moving on as `advance` says.
     #[must_use]
     pub fn step(mut self, target: ValueOf<P>, advance: Advance) -> Self {
@@ -358,8 +407,9 @@ impl<P: SpringProperty> SpringSequence<P> {
     }
 
     /// Advances the sequence's clock by `dt` and says what to do: start the current step (set
-    /// its target), or nothing. `settled`: the spring has settled on the current target.
-    pub(super) fn tick(&mut self, dt: f32, settled: bool) -> Tick {
+    /// its target), or nothing. `arrived`: the spring has settled on the current target, or
+    /// for a [`Within`](Advance::Within) step is within its distance.
+    pub(super) fn tick(&mut self, dt: f32, arrived: bool) -> Tick {
         match self.phase {
             SequencePhase::Paused | SequencePhase::Finished => Tick::Idle,
             SequencePhase::Delayed => {
@@ -388,9 +438,9 @@ impl<P: SpringProperty> SpringSequence<P> {
                     return Tick::Completed;
                 };
                 let done = match step.advance {
-                    Advance::OnSettle => settled,
+                    Advance::OnSettle | Advance::Within(_) => arrived,
                     Advance::After(seconds) => self.elapsed >= seconds,
-                    Advance::OnSettleOrAfter(seconds) => settled || self.elapsed >= seconds,
+                    Advance::OnSettleOrAfter(seconds) => arrived || self.elapsed >= seconds,
                 };
                 if !done {
                     return Tick::Idle;

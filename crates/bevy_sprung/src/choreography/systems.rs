@@ -5,11 +5,11 @@ use core::marker::PhantomData;
 
 use bevy::prelude::*;
 
-use super::sequence::{SequencePhase, SpringSequence, Tick};
+use super::sequence::{Advance, SequencePhase, SpringSequence, Tick};
 use crate::clock::SpringTime;
 use crate::control::SpringControl;
 use crate::property::SpringProperty;
-use crate::spring::trigger_if_alive;
+use crate::spring::{SpringMotion, trigger_if_alive};
 
 /// Triggered on an entity when its [`SpringSequence<P>`] has played its last step: the
 /// tween-completion event for a whole choreography.
@@ -70,14 +70,20 @@ entity_event!(SequenceInterrupted);
 pub(super) fn drive_sequences<P, C, A>(
     time: SpringTime,
     mut commands: Commands,
-    mut sequences: Query<(Entity, &mut SpringSequence<P>, &mut C, Has<A>)>,
+    mut sequences: Query<(
+        Entity,
+        &mut SpringSequence<P>,
+        &mut C,
+        Option<&SpringMotion<P>>,
+        Has<A>,
+    )>,
 ) where
     P: SpringProperty,
     C: SpringControl<P>,
     A: Component,
 {
     let steps = time.steps();
-    for (entity, mut sequence, mut spring, asleep) in &mut sequences {
+    for (entity, mut sequence, mut spring, motion, asleep) in &mut sequences {
         if matches!(
             sequence.phase(),
             SequencePhase::Finished | SequencePhase::Paused
@@ -92,8 +98,16 @@ pub(super) fn drive_sequences<P, C, A>(
             trigger_if_alive(&mut commands, SequenceInterrupted::<P>::new(entity));
             continue;
         }
+        let arrived = on_step
+            && match sequence.current().map(|step| step.advance) {
+                Some(Advance::Within(distance)) => motion.is_some_and(|motion| {
+                    let omega = spring.parameters().natural_frequency();
+                    asleep || motion.is_within(target, distance, omega)
+                }),
+                _ => asleep,
+            };
         let dt = steps.dt(spring.clock());
-        match sequence.tick(dt, asleep && on_step) {
+        match sequence.tick(dt, arrived) {
             Tick::Idle => {}
             Tick::Start => {
                 if let Some(step) = sequence.current().copied() {

@@ -16,7 +16,7 @@ use bevy::ecs::change_detection::DetectChangesMut;
 use bevy::ecs::lifecycle::HookContext;
 use bevy::ecs::world::DeferredWorld;
 use bevy::log::warn_once;
-use bevy::math::VectorSpace;
+use bevy::math::{NormedVectorSpace, VectorSpace};
 use bevy::prelude::*;
 use sprung::{RestThreshold, Spring};
 
@@ -288,6 +288,17 @@ impl<P: SpringProperty> SpringMotion<P> {
     #[must_use]
     pub fn velocity(&self) -> VelocityOf<P> {
         self.velocity.into()
+    }
+
+    /// Whether the spring, heading for `target`, is within `distance` of it and slow enough not
+    /// to leave it again: the length of its offset at most `distance`, its speed at most
+    /// `distance × omega` (its natural frequency). A spring heading elsewhere is not.
+    #[inline]
+    pub(crate) fn is_within(&self, target: ValueOf<P>, distance: f32, omega: f32) -> bool {
+        let reach = distance * distance;
+        self.active_target == target
+            && self.offset.offset.norm_squared() <= reach
+            && self.velocity.norm_squared() <= reach * omega * omega
     }
 
     /// Whether the property's `current` value is the one this motion put there: the target
@@ -642,6 +653,11 @@ impl<P: SpringProperty> SpringControl<P> for PropertySpring<P> {
     #[inline]
     fn target(&self) -> ValueOf<P> {
         self.target
+    }
+
+    #[inline]
+    fn parameters(&self) -> Spring<f32> {
+        self.spring
     }
 
     #[inline]
