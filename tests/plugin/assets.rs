@@ -3,8 +3,11 @@
 
 use bevy::asset::{AssetPlugin, LoadState};
 use bevy::prelude::*;
-use bevy_sprung::asset::{SequencePreset, SpringPreset, UseSequencePreset, UseSpringPreset};
+use bevy_sprung::asset::{
+    SequencePreset, SpringPreset, UsePropertyPreset, UseSequencePreset, UseSpringPreset,
+};
 use bevy_sprung::prelude::*;
+use bevy_sprung::transform::Scale;
 
 use crate::harness::{run, targets_visited, translation, translation_spring};
 
@@ -73,6 +76,49 @@ fn a_preset_file_loads_and_reaches_every_spring_of_the_entity() {
         .spring = stiff;
     run(&mut app, 2);
     assert_eq!(*translation_spring(&app, entity).spring(), stiff);
+}
+
+/// A preset for one property reaches that property's spring only, and wins over the entity's
+/// preset for every spring.
+#[test]
+fn a_property_preset_reaches_its_property_only_and_wins_over_the_entitys() {
+    let mut app = asset_app("assets");
+    let server = app.world().resource::<AssetServer>().clone();
+    let every: Handle<SpringPreset> = server.load("springs/ui.spring.ron");
+    let scale: Handle<SpringPreset> = server.load("springs/gentle.spring.ron");
+    let only = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::molasses(), Vec3::X * 100.0),
+            ScaleSpring::new(Spring::molasses(), Vec3::splat(2.0)),
+            UsePropertyPreset::<Scale>::new(scale.clone()),
+        ))
+        .id();
+    let both = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::molasses(), Vec3::X * 100.0),
+            ScaleSpring::new(Spring::molasses(), Vec3::splat(2.0)),
+            UseSpringPreset(every.clone()),
+            UsePropertyPreset::<Scale>::new(scale.clone()),
+        ))
+        .id();
+    assert!(matches!(wait_for(&mut app, &every), LoadState::Loaded));
+    assert!(matches!(wait_for(&mut app, &scale), LoadState::Loaded));
+    app.update();
+    let presets = app.world().resource::<Assets<SpringPreset>>();
+    let (every, scale) = (
+        presets.get(&every).unwrap().spring,
+        presets.get(&scale).unwrap().spring,
+    );
+    assert_ne!(every, scale);
+    let scale_spring = |entity| *app.world().get::<ScaleSpring>(entity).unwrap().spring();
+    assert_eq!(*translation_spring(&app, only).spring(), Spring::molasses());
+    assert_eq!(scale_spring(only), scale);
+    assert_eq!(*translation_spring(&app, both).spring(), every);
+    assert_eq!(scale_spring(both), scale);
 }
 
 #[test]

@@ -3,7 +3,8 @@
 //!
 //! - `*.spring.ron` is a [`SpringPreset`]: spring parameters in any parametrisation and
 //!   optionally rest tolerances. An entity with [`UseSpringPreset`] gives them to every spring
-//!   it has, when the file loads and each time it changes.
+//!   it has, and one with [`UsePropertyPreset<P>`] to its spring on property `P` only (that one
+//!   wins for `P`), when the file loads and each time it changes.
 //! - `*.sequence.ron` is a [`SequencePreset`]: a choreography (steps, delay, repeats). An
 //!   entity with [`UseSequencePreset<P>`] gets the [`SpringSequence<P>`] it describes, its
 //!   targets read as property `P`'s values; edited, it restarts.
@@ -317,6 +318,64 @@ impl AssetLoader for SequencePresetLoader {
 #[reflect(Component, Debug, Clone)]
 pub struct UseSpringPreset(pub Handle<SpringPreset>);
 
+/// Gives the [`SpringPreset`] at this handle to the entity's spring on property `P` only (as
+/// [`UseSpringPreset`] does for every spring of the entity, which it overrides for `P`): when
+/// the preset loads, and again each time it changes.
+///
+/// # Example
+/// ```no_run
+/// use bevy::prelude::*;
+/// use bevy_sprung::asset::{UsePropertyPreset, UseSpringPreset};
+/// use bevy_sprung::prelude::*;
+/// use bevy_sprung::transform::Scale;
+///
+/// fn spawn(mut commands: Commands, assets: Res<AssetServer>) {
+///     commands.spawn((
+///         Transform::default(),
+///         TranslationSpring::new(Spring::default(), Vec3::X * 100.0),
+///         ScaleSpring::new(Spring::default(), Vec3::ONE),
+///         // Every spring smooth, but the scale bouncy.
+///         UseSpringPreset(assets.load("springs/smooth.spring.ron")),
+///         UsePropertyPreset::<Scale>::new(assets.load("springs/bouncy.spring.ron")),
+///     ));
+/// }
+/// ```
+#[derive(Component, Reflect)]
+#[component(on_add = first_use::<Self>)]
+#[reflect(Component)]
+pub struct UsePropertyPreset<P: SpringProperty> {
+    /// The preset.
+    pub handle: Handle<SpringPreset>,
+    #[reflect(ignore)]
+    property: PhantomData<fn() -> P>,
+}
+
+impl<P: SpringProperty> UsePropertyPreset<P> {
+    /// The preset at `handle`, for the spring on property `P`.
+    #[must_use]
+    pub fn new(handle: Handle<SpringPreset>) -> Self {
+        Self {
+            handle,
+            property: PhantomData,
+        }
+    }
+}
+
+impl<P: SpringProperty> Clone for UsePropertyPreset<P> {
+    fn clone(&self) -> Self {
+        Self::new(self.handle.clone())
+    }
+}
+
+impl<P: SpringProperty> fmt::Debug for UsePropertyPreset<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("UsePropertyPreset")
+            .field("property", &P::short_type_path())
+            .field("handle", &self.handle)
+            .finish()
+    }
+}
+
 /// Gives this entity the [`SpringSequence<P>`] that the [`SequencePreset`] at this handle
 /// describes, when it loads, and again (from the start) each time it changes.
 #[derive(Component, Reflect)]
@@ -365,22 +424,32 @@ fn changed<A: Asset>(events: &mut MessageReader<AssetEvent<A>>) -> Vec<AssetId<A
         .collect()
 }
 
-/// Gives presets that loaded or changed to the springs on property `P` that use them, and
-/// presets that are already loaded to springs that started using them.
+/// Gives presets that loaded or changed to the springs on property `P` that use them (through
+/// [`UsePropertyPreset<P>`], or else [`UseSpringPreset`]), and presets that are already loaded
+/// to springs that started using them.
 fn apply_presets<P, C>(
     mut events: MessageReader<AssetEvent<SpringPreset>>,
     presets: Res<Assets<SpringPreset>>,
-    mut springs: Query<(Ref<UseSpringPreset>, &mut C)>,
+    mut every_spring: Query<(Ref<UseSpringPreset>, &mut C), Without<UsePropertyPreset<P>>>,
+    mut this_property: Query<(Ref<UsePropertyPreset<P>>, &mut C)>,
 ) where
     P: SpringProperty,
     C: SpringControl<P>,
 {
     let changed = changed(&mut events);
-    for (uses, mut spring) in &mut springs {
-        if !(uses.is_changed() || changed.contains(&uses.0.id())) {
+    let uses = every_spring
+        .iter_mut()
+        .map(|(uses, spring)| (uses.is_changed(), uses.0.id(), spring))
+        .chain(
+            this_property
+                .iter_mut()
+                .map(|(uses, spring)| (uses.is_changed(), uses.handle.id(), spring)),
+        );
+    for (started, preset, mut spring) in uses {
+        if !(started || changed.contains(&preset)) {
             continue;
         }
-        if let Some(preset) = presets.get(&uses.0) {
+        if let Some(preset) = presets.get(preset) {
             spring.set_parameters(preset.spring);
             if let Some(rest) = preset.rest {
                 spring.set_rest_threshold(rest);
@@ -455,16 +524,22 @@ impl Plugin for SpringAssetPlugin {
 
 /// Presets from files reach property `P`'s springs, in [`SpringPhase::Configure`]: what
 /// [`SpringPropertyPlugin<P>`](crate::SpringPropertyPlugin) adds of assets. The system joins
-/// with the first [`UseSpringPreset`].
+/// with the first [`UseSpringPreset`] or [`UsePropertyPreset<P>`].
 pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
-    let users = [core::any::TypeId::of::<UseSpringPreset>()];
+    app.register_type::<UsePropertyPreset<P>>();
+    let users = [
+        core::any::TypeId::of::<UseSpringPreset>(),
+        core::any::TypeId::of::<UsePropertyPreset<P>>(),
+    ];
     add_systems_on_first_use(app, &users, SpringUpdate, |schedule| {
         schedule.add_systems(
             apply_presets::<P, PropertySpring<P>>
                 .in_set(PropertySystems::<P>::phase(SpringPhase::Configure))
                 .run_if(
-                    resource_exists::<Assets<SpringPreset>>
-                        .and_then(any_with_component::<UseSpringPreset>),
+                    resource_exists::<Assets<SpringPreset>>.and_then(
+                        any_with_component::<UseSpringPreset>
+                            .or_else(any_with_component::<UsePropertyPreset<P>>),
+                    ),
                 ),
         );
     });
