@@ -33,7 +33,7 @@ use bevy::prelude::*;
 use bevy::render::render_resource::{Extent3d, TextureDimension, TextureFormat};
 use bevy::sprite::Anchor;
 use bevy::window::{PrimaryWindow, WindowRef};
-use bevy_sprung::color::SpriteTint;
+use bevy_sprung::color::SpriteColor;
 use bevy_sprung::juice::JuiceSystems;
 use bevy_sprung::prelude::*;
 
@@ -364,7 +364,7 @@ fn spawn_board(commands: &mut Commands, rounded: &Handle<Image>) {
                 .pressed(Vec3::splat(0.9))
                 .dragged(Vec3::splat(1.14)),
             SpriteColorSpring::new(Spring::smooth(), color),
-            InteractionTargets::<SpriteTint>::new(color)
+            InteractionTargets::<SpriteColor>::new(color)
                 .hovered(glow)
                 .pressed(color.mix(&Color::WHITE, 0.12))
                 .dragged(glow),

@@ -21,7 +21,6 @@
 use bevy::input::mouse::MouseMotion;
 use bevy::prelude::*;
 use bevy_sprung::asset::{UseSequencePreset, UseSpringPreset};
-use bevy_sprung::color::BackgroundTint;
 use bevy_sprung::prelude::*;
 use bevy_sprung::ui::{UiTransformScale, UiTransformTranslation};
 
@@ -169,16 +168,16 @@ fn spawn_menu(commands: &mut Commands, assets: &AssetServer) {
             },
             BackgroundColor(ITEM.with_alpha(0.0)),
             UiTransform::from_translation(ITEM_START),
-            UiTranslationSpring::new(Spring::default(), ITEM_START),
+            UiTransformTranslationSpring::new(Spring::default(), ITEM_START),
             // Fly in, 80 ms apart, and fade up on the way.
             SpringSequence::<UiTransformTranslation>::new()
                 .staggered(index, 0.08)
                 .then(Val2::ZERO),
             BackgroundColorSpring::new(Spring::default(), ITEM.with_alpha(0.0)),
-            SpringSequence::<BackgroundTint>::new()
+            SpringSequence::<BackgroundColor>::new()
                 .staggered(index, 0.08)
                 .then(ITEM),
-            UiScaleSpring::new(Spring::default(), Vec2::ONE),
+            UiTransformScaleSpring::new(Spring::default(), Vec2::ONE),
             // Every spring of the item takes its parameters from the preset file.
             UseSpringPreset(menu_spring.clone()),
             SpringGroup::named("menu"),
@@ -222,7 +221,7 @@ fn spawn_settings_panel(commands: &mut Commands, assets: &AssetServer) {
         },
         BackgroundColor(PANEL),
         UiTransform::from_translation(Val2::px(PANEL_WIDTH, 0.0)),
-        UiTranslationSpring::new(Spring::default(), Val2::px(PANEL_WIDTH, 0.0)),
+        UiTransformTranslationSpring::new(Spring::default(), Val2::px(PANEL_WIDTH, 0.0)),
         UseSpringPreset(assets.load("springs/gentle.spring.ron")),
         children![
             panel_line("Settings", 34.0),
@@ -322,7 +321,7 @@ fn hover_items(
         (
             Ref<Hovered>,
             &mut BackgroundColorSpring,
-            &mut UiScaleSpring,
+            &mut UiTransformScaleSpring,
             Option<&mut SpringSequence<UiTransformScale>>,
         ),
         Changed<Hovered>,
@@ -376,7 +375,7 @@ fn cycle_reduced_motion(keys: Res<ButtonInput<KeyCode>>, mut reduced: ResMut<Red
 /// fades the contents out at once.
 fn open_or_close_panel(
     settings: Res<Settings>,
-    panel: Single<(Entity, &mut UiTranslationSpring), With<SettingsPanel>>,
+    panel: Single<(Entity, &mut UiTransformTranslationSpring), With<SettingsPanel>>,
     mut content: Query<&mut TextColorSpring, With<PanelContent>>,
     mut commands: Commands,
 ) {

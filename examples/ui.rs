@@ -107,8 +107,8 @@ fn button(label: &str, node: Node) -> impl Bundle {
         // One spring per property the button animates.
         BackgroundColorSpring::new(Spring::snappy(), IDLE),
         BorderColorSpring::new(Spring::snappy(), Color::srgb(0.3, 0.33, 0.4)),
-        UiScaleSpring::new(Spring::bouncy(), Vec2::ONE),
-        UiTranslationSpring::new(Spring::snappy(), Val2::ZERO),
+        UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ONE),
+        UiTransformTranslationSpring::new(Spring::snappy(), Val2::ZERO),
         children![(
             Text::new(label),
             TextFont::from_font_size(20.0),
@@ -136,7 +136,7 @@ fn setup(mut commands: Commands) {
         },
         BackgroundColor(Color::srgba(0.1, 0.11, 0.15, 0.0)),
         UiTransform::from_translation(Val2::px(-PANEL_WIDTH, 0.0)),
-        UiTranslationSpring::new(Spring::smooth(), Val2::px(-PANEL_WIDTH, 0.0)),
+        UiTransformTranslationSpring::new(Spring::smooth(), Val2::px(-PANEL_WIDTH, 0.0)),
         BackgroundColorSpring::new(Spring::smooth(), Color::srgba(0.1, 0.11, 0.15, 0.0)),
         children![
             button("New game", panel_button()),
@@ -179,12 +179,12 @@ fn setup(mut commands: Commands) {
             },
             BackgroundColor(Color::srgb(0.9, 0.3, 0.35)),
             UiTransform::from_scale(Vec2::ZERO),
-            // Pops from nothing; `UiScaleSpring` never passes through zero, so closing lands
+            // Pops from nothing; `UiTransformScaleSpring` never passes through zero, so closing lands
             // on 0 instead of flipping.
-            UiScaleSpring::new(Spring::bouncy(), Vec2::ZERO),
+            UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ZERO),
             // Turns once as it pops in, and back as it goes.
             Spin::z(0.0),
-            SpinSpring::new(Spring::smooth(), 0.0),
+            SpinAngleSpring::new(Spring::smooth(), 0.0),
             children![(Text::new("3"), TextFont::from_font_size(14.0))],
         ));
     commands.spawn((
@@ -279,8 +279,14 @@ fn toggle(
 /// do the rest, from wherever they are.
 fn animate_menu(
     menu: Res<Menu>,
-    mut panel: Single<(&mut UiTranslationSpring, &mut BackgroundColorSpring), With<Panel>>,
-    mut badge: Single<(&mut UiScaleSpring, &mut SpinSpring), With<Badge>>,
+    mut panel: Single<
+        (
+            &mut UiTransformTranslationSpring,
+            &mut BackgroundColorSpring,
+        ),
+        With<Panel>,
+    >,
+    mut badge: Single<(&mut UiTransformScaleSpring, &mut SpinAngleSpring), With<Badge>>,
 ) {
     if !menu.is_changed() {
         return;
@@ -306,8 +312,8 @@ fn animate_buttons(
             &Children,
             &mut BackgroundColorSpring,
             &mut BorderColorSpring,
-            &mut UiScaleSpring,
-            &mut UiTranslationSpring,
+            &mut UiTransformScaleSpring,
+            &mut UiTransformTranslationSpring,
         ),
         Changed<Look>,
     >,

@@ -7,9 +7,9 @@ use std::collections::HashMap;
 
 use bevy::color::Oklaba;
 use bevy::prelude::*;
+use bevy_sprung::prelude::*;
 use bevy_sprung::spin::SpinAngle;
 use bevy_sprung::ui::{NodeLeft, NodeLeftSpring, UiTransformTranslation};
-use bevy_sprung::{color::BackgroundTint, prelude::*};
 use sprung::Scalar;
 
 use crate::harness::app;
@@ -97,7 +97,8 @@ fn spawn_cases(app: &mut App) -> HashMap<Entity, Case> {
                 &mut cases,
                 (
                     UiTransform::from_translation(Val2::percent(1.0, 1.0)),
-                    UiTranslationSpring::new(spring, Val2::percent(target, 1.0)).with_rest(rest),
+                    UiTransformTranslationSpring::new(spring, Val2::percent(target, 1.0))
+                        .with_rest(rest),
                 ),
                 (&spring, format!("{name} ui translation → {target} %")),
                 (target - 1.0).abs(),
@@ -109,7 +110,7 @@ fn spawn_cases(app: &mut App) -> HashMap<Entity, Case> {
                 &mut cases,
                 (
                     Spin::z(0.0),
-                    SpinSpring::new(spring, target / 100.0).with_rest(rest),
+                    SpinAngleSpring::new(spring, target / 100.0).with_rest(rest),
                 ),
                 (&spring, format!("{name} spin → {} rad", target / 100.0)),
                 (target / 100.0).abs(),
@@ -194,7 +195,7 @@ fn every_property_arrives_at_every_frame_rate_and_magnitude() {
             .add_observer(record::<UiTransformTranslation>)
             .add_observer(record::<SpinAngle>)
             .add_observer(record::<Rotation>)
-            .add_observer(record::<BackgroundTint>);
+            .add_observer(record::<BackgroundColor>);
         let cases = spawn_cases(&mut app);
         let longest = cases.values().map(|case| case.analytic).fold(0.0, f64::max);
         let dt = 1.0 / f64::from(fps);

@@ -21,7 +21,6 @@ use bevy::math::VectorSpace;
 use bevy::platform::collections::HashSet;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
-use bevy_sprung::color::BackgroundTint;
 use bevy_sprung::interaction::{DragReleased, InteractionTargets, SpringDrag};
 use bevy_sprung::prelude::*;
 use bevy_sprung::property::{SpringProperty, ValueOf, VelocityOf};
@@ -258,7 +257,7 @@ impl Chaotic for Scale {
     }
 }
 
-impl Chaotic for BackgroundTint {
+impl Chaotic for BackgroundColor {
     const NAME: &'static str = "background";
     const KIND: Kind = Kind::Node;
     fn value(random: &mut Random) -> Color {
@@ -848,13 +847,13 @@ fn interaction_targets(world: &mut World) {
         return;
     };
     let targets = draw(world, |random| {
-        InteractionTargets::<BackgroundTint>::new(BackgroundTint::value(random))
-            .hovered(BackgroundTint::value(random))
-            .pressed(BackgroundTint::extreme(random))
+        InteractionTargets::<BackgroundColor>::new(BackgroundColor::value(random))
+            .hovered(BackgroundColor::value(random))
+            .pressed(BackgroundColor::extreme(random))
     });
     let mut node = world.entity_mut(node);
-    if node.contains::<InteractionTargets<BackgroundTint>>() {
-        node.remove::<InteractionTargets<BackgroundTint>>();
+    if node.contains::<InteractionTargets<BackgroundColor>>() {
+        node.remove::<InteractionTargets<BackgroundColor>>();
     } else {
         node.insert(targets);
     }
@@ -1002,7 +1001,7 @@ macro_rules! for_each_property {
         $action::<Translation>($($argument),*);
         $action::<Rotation>($($argument),*);
         $action::<Scale>($($argument),*);
-        $action::<BackgroundTint>($($argument),*);
+        $action::<BackgroundColor>($($argument),*);
         $action::<NodeSize>($($argument),*);
         $action::<UiTransformRotation>($($argument),*);
         $action::<UiTransformTranslation>($($argument),*);
@@ -1073,7 +1072,7 @@ fn chaotic_frame(app: &mut App) {
                 0 => spring_operation::<Translation>(world),
                 1 => spring_operation::<Rotation>(world),
                 2 => spring_operation::<Scale>(world),
-                3 => spring_operation::<BackgroundTint>(world),
+                3 => spring_operation::<BackgroundColor>(world),
                 4 => spring_operation::<NodeSize>(world),
                 5 => spring_operation::<UiTransformRotation>(world),
                 _ => spring_operation::<UiTransformTranslation>(world),
@@ -1243,7 +1242,7 @@ fn all_asleep(world: &mut World) -> bool {
         Translation,
         Rotation,
         Scale,
-        BackgroundTint,
+        BackgroundColor,
         NodeSize,
         UiTransformRotation,
         UiTransformTranslation
@@ -1305,7 +1304,7 @@ fn run_chaos(seed: u64, fixed: bool) {
     springs += assert_at_rest::<Translation>(world, seed);
     springs += assert_at_rest::<Rotation>(world, seed);
     springs += assert_at_rest::<Scale>(world, seed);
-    springs += assert_at_rest::<BackgroundTint>(world, seed);
+    springs += assert_at_rest::<BackgroundColor>(world, seed);
     springs += assert_at_rest::<NodeSize>(world, seed);
     springs += assert_at_rest::<UiTransformRotation>(world, seed);
     springs += assert_at_rest::<UiTransformTranslation>(world, seed);

@@ -15,7 +15,7 @@ use bevy_sprung::interaction::{
 };
 use bevy_sprung::prelude::*;
 use bevy_sprung::transform::Scale;
-use bevy_sprung::ui::{UiTransformTranslation, UiTranslationSpring};
+use bevy_sprung::ui::{UiTransformTranslation, UiTransformTranslationSpring};
 use sprung::SpringState;
 
 use crate::harness::{app, motion, run};
@@ -284,7 +284,7 @@ fn ui_card(app: &mut App, drag: SpringDrag) -> Entity {
         .spawn((
             Node::default(),
             UiTransform::default(),
-            UiTranslationSpring::new(Spring::smooth(), Val2::px(0.0, 0.0)),
+            UiTransformTranslationSpring::new(Spring::smooth(), Val2::px(0.0, 0.0)),
             drag,
         ))
         .id()
@@ -367,7 +367,10 @@ fn fling_snaps_to_the_slot_nearest_the_throw() {
         );
         assert_eq!(released.snapped, Some(slot), "{released:?}");
         assert_eq!(released.target, slots[slot]);
-        let spring = *app.world().get::<UiTranslationSpring>(card).unwrap();
+        let spring = *app
+            .world()
+            .get::<UiTransformTranslationSpring>(card)
+            .unwrap();
         assert_eq!(spring.target(), Val2::px(slots[slot].x, slots[slot].y));
         // The next frame is the exact step from the release, with the pointer's velocity.
         let start = ui_position(&app, card);

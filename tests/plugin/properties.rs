@@ -277,7 +277,7 @@ fn a_value_written_mid_flight_is_sprung_on_from_where_it_was_put() {
         .world_mut()
         .spawn((
             UiTransform::default(),
-            UiScaleSpring::new(spring, target.truncate()),
+            UiTransformScaleSpring::new(spring, target.truncate()),
         ))
         .id();
     run(&mut app, 6);

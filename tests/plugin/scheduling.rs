@@ -178,8 +178,9 @@ fn no_springs_no_work() {
         .filter(|(a, b)| a.1 != b.1)
         .map(|(a, _)| a.0.as_str())
         .collect();
-    // The spring schedule's runner, and the translation springs' wake and step.
-    assert_eq!(ran.len(), 3, "{ran:?}");
+    // The spring schedule's runner, and the translation springs' wake and step, and their
+    // check for springs added without a `Transform`.
+    assert_eq!(ran.len(), 4, "{ran:?}");
     assert!(
         ran.iter().any(|name| name.contains("run_spring_update")),
         "{ran:?}"
@@ -190,6 +191,11 @@ fn no_springs_no_work() {
             .count(),
         2,
         "only the translation systems run: {ran:?}"
+    );
+    assert!(
+        ran.iter()
+            .any(|name| name.contains("warn_missing") && name.contains("Translation")),
+        "{ran:?}"
     );
     // Only translation's systems came in, besides the runner: not those of sequences or
     // followers, which wait for their own first component.

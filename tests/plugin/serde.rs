@@ -44,7 +44,8 @@ fn configurations_round_trip() {
     // The starting velocity too: both move alike from the same place.
     assert_same_motion(translation, back);
 
-    let slide = UiTranslationSpring::new(Spring::smooth(), Val2::new(percent(30.0), px(-8.0)));
+    let slide =
+        UiTransformTranslationSpring::new(Spring::smooth(), Val2::new(percent(30.0), px(-8.0)));
     assert_eq!(round_trip(&slide).target(), slide.target());
     let fade = BackgroundColorSpring::new(Spring::snappy(), Color::srgba(0.2, 0.4, 0.9, 0.5));
     assert_eq!(round_trip(&fade).target(), fade.target());

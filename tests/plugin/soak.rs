@@ -66,7 +66,7 @@ fn spawn_entities(app: &mut App) -> Vec<(Entity, f32)> {
                     Node::default(),
                     NodeLeftSpring::new(spring, px(0.0)),
                     Spin::z(0.0),
-                    SpinSpring::new(spring, 0.0),
+                    SpinAngleSpring::new(spring, 0.0),
                 ))
                 .id();
             (entity, scale)
@@ -99,7 +99,7 @@ fn random_frame(app: &mut App, random: &mut Random, entities: &[(Entity, f32)]) 
                 .unwrap()
                 .set_target(px(random.symmetric(scale)));
             world
-                .get_mut::<SpinSpring>()
+                .get_mut::<SpinAngleSpring>()
                 .unwrap()
                 .set_target(random.symmetric(100.0));
         } else if event < 0.008 {

@@ -31,7 +31,7 @@ fn a_spin_turns_through_whole_turns_and_lands_exactly() {
         .spawn((
             Transform::default(),
             Spin::z(0.0),
-            SpinSpring::new(spring, 2.0 * TAU),
+            SpinAngleSpring::new(spring, 2.0 * TAU),
         ))
         .id();
     let mut previous = Quat::IDENTITY;
@@ -60,7 +60,7 @@ fn a_resting_spin_writes_nothing() {
         .spawn((
             Transform::default(),
             Spin::new(Dir3::X, 0.0),
-            SpinSpring::new(Spring::snappy(), TAU),
+            SpinAngleSpring::new(Spring::snappy(), TAU),
         ))
         .id();
     run(&mut app, 300);
@@ -83,7 +83,7 @@ fn a_resting_spin_writes_nothing() {
     );
     // Retargeting wakes it and turns it on.
     app.world_mut()
-        .get_mut::<SpinSpring>(entity)
+        .get_mut::<SpinAngleSpring>(entity)
         .unwrap()
         .set_target(2.0 * TAU);
     run(&mut app, 2);
@@ -100,7 +100,7 @@ fn a_spin_turns_a_ui_node() {
         .spawn((
             UiTransform::default(),
             Spin::z(0.0),
-            SpinSpring::new(Spring::smooth(), -TAU),
+            SpinAngleSpring::new(Spring::smooth(), -TAU),
         ))
         .id();
     run(&mut app, 10);

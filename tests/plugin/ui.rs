@@ -25,9 +25,9 @@ fn ui_transform_and_node_geometry_spring_in_their_units() {
             },
             NodeSizeSpring::new(Spring::snappy(), Val2::new(px(200.0), vh(60.0))),
             NodeLeftSpring::new(Spring::snappy(), percent(30.0)),
-            UiTranslationSpring::new(Spring::bouncy(), Val2::new(vw(5.0), px(-8.0))),
-            UiScaleSpring::new(Spring::bouncy(), Vec2::splat(1.1)),
-            UiRotationSpring::new(Spring::smooth(), Rot2::degrees(15.0)),
+            UiTransformTranslationSpring::new(Spring::bouncy(), Val2::new(vw(5.0), px(-8.0))),
+            UiTransformScaleSpring::new(Spring::bouncy(), Vec2::splat(1.1)),
+            UiTransformRotationSpring::new(Spring::smooth(), Rot2::degrees(15.0)),
         ))
         .id();
     run(&mut app, 5);
@@ -97,7 +97,7 @@ fn ui_rotation_takes_the_short_way() {
         .world_mut()
         .spawn((
             UiTransform::from_rotation(Rot2::degrees(170.0)),
-            UiRotationSpring::new(Spring::smooth(), Rot2::degrees(-170.0)),
+            UiTransformRotationSpring::new(Spring::smooth(), Rot2::degrees(-170.0)),
         ))
         .id();
     for _ in 0..120 {

@@ -4,12 +4,11 @@
 //! Each test protects one defined behaviour (see the README's "How stable").
 
 use bevy::prelude::*;
-use bevy_sprung::color::BackgroundTint;
 use bevy_sprung::interaction::SpringDrag;
 use bevy_sprung::prelude::*;
 use bevy_sprung::property::{SpringProperty, ValueOf};
 use bevy_sprung::transform::Scale;
-use bevy_sprung::ui::{NodeSize, UiTransformRotation, UiTranslationSpring};
+use bevy_sprung::ui::{NodeSize, UiTransformRotation, UiTransformTranslationSpring};
 
 use crate::harness::{app, asleep, assert_stepped_from, run, spawn_translation, translation};
 use crate::interaction::{drag, drag_end, drag_start};
@@ -157,7 +156,7 @@ fn a_sleeping_spring_replaced_or_inserted_again_moves_to_its_new_target() {
     );
     let white = Color::WHITE;
     let red = Color::srgb(1.0, 0.0, 0.0);
-    replaced_spring_moves::<BackgroundTint>(
+    replaced_spring_moves::<BackgroundColor>(
         |app| {
             app.world_mut()
                 .spawn((
@@ -390,7 +389,7 @@ fn a_drag_ends_on_release_after_its_spring_was_removed() {
             .spawn((
                 Node::default(),
                 UiTransform::default(),
-                UiTranslationSpring::new(Spring::smooth(), Val2::px(0.0, 0.0)),
+                UiTransformTranslationSpring::new(Spring::smooth(), Val2::px(0.0, 0.0)),
                 SpringDrag::new(),
             ))
             .id();
@@ -409,7 +408,7 @@ fn a_drag_ends_on_release_after_its_spring_was_removed() {
         } else {
             app.world_mut()
                 .entity_mut(card)
-                .remove::<UiTranslationSpring>();
+                .remove::<UiTransformTranslationSpring>();
         }
         run(&mut app, 1);
         drag_end(app.world_mut(), card, Vec2::new(120.0, 100.0));
@@ -421,7 +420,7 @@ fn a_drag_ends_on_release_after_its_spring_was_removed() {
         } else {
             app.world_mut()
                 .entity_mut(card)
-                .insert(UiTranslationSpring::new(
+                .insert(UiTransformTranslationSpring::new(
                     Spring::smooth(),
                     Val2::px(20.0, 0.0),
                 ));
@@ -521,7 +520,7 @@ fn a_ui_rotation_spring_toward_an_invalid_rotation_holds_still() {
                         rotation: start,
                         ..default()
                     },
-                    UiRotationSpring::new(Spring::molasses(), target),
+                    UiTransformRotationSpring::new(Spring::molasses(), target),
                 ))
                 .id()
         };

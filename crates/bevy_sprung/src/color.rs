@@ -1,4 +1,9 @@
 //! Colours of sprites and UI nodes, sprung in Oklab ([`OklabColor`]).
+//!
+//! A component that is one colour is its own property: `PropertySpring<BackgroundColor>`,
+//! `SpringSettled<TextColor>`, `SpringSequence<BorderColor>` name Bevy's components directly. A
+//! colour that is a field of a larger component has a marker named after both: `SpriteColor`
+//! (`Sprite::color`), `ImageNodeColor` (`ImageNode::color`).
 
 use bevy::prelude::*;
 
@@ -15,62 +20,121 @@ mod sprite {
 
     spring_property!(
         /// `Sprite::color`, in Oklab.
-        pub SpriteTint: Sprite::color as OklabColor
+        pub SpriteColor: Sprite::color as OklabColor
     );
 
     /// A spring on the colour of a `Sprite`, in Oklab.
-    pub type SpriteColorSpring = PropertySpring<SpriteTint>;
+    pub type SpriteColorSpring = PropertySpring<SpriteColor>;
+
+    /// The marker of `Sprite::color`, renamed after its component and field.
+    #[deprecated(since = "0.1.0", note = "renamed `SpriteColor`, after `Sprite::color`")]
+    pub type SpriteTint = SpriteColor;
 }
 
 #[cfg(feature = "sprite")]
-pub use sprite::{SpriteColorSpring, SpriteTint};
+#[expect(deprecated, reason = "the old name, kept for a release")]
+pub use sprite::SpriteTint;
+#[cfg(feature = "sprite")]
+pub use sprite::{SpriteColor, SpriteColorSpring};
 
 #[cfg(feature = "ui")]
 mod ui {
     use bevy::prelude::*;
 
+    use crate::property::SpringProperty;
     use crate::space::OklabColor;
     use crate::spring::PropertySpring;
 
-    spring_property!(
-        /// `BackgroundColor`, in Oklab.
-        pub BackgroundTint: BackgroundColor::0 as OklabColor
-    );
+    /// `BackgroundColor` is its own property, sprung in Oklab.
+    impl SpringProperty for BackgroundColor {
+        type Component = Self;
+        type Space = OklabColor;
 
-    spring_property!(
-        /// `BorderColor`, all four sides together (read from the top side, written to all), in
-        /// Oklab.
-        pub BorderTint: BorderColor {
-            get: |border| border.top,
-            set: |border, color| *border = BorderColor::all(color)
-        } as OklabColor
-    );
+        #[inline]
+        fn get(background: &Self) -> Color {
+            background.0
+        }
 
-    spring_property!(
-        /// `TextColor`, in Oklab.
-        pub TextTint: TextColor::0 as OklabColor
-    );
+        #[inline]
+        fn set(background: &mut Self, color: Color) {
+            background.0 = color;
+        }
+    }
+
+    /// `BorderColor` is its own property, all four sides together (read from the top side,
+    /// written to all), sprung in Oklab.
+    impl SpringProperty for BorderColor {
+        type Component = Self;
+        type Space = OklabColor;
+
+        #[inline]
+        fn get(border: &Self) -> Color {
+            border.top
+        }
+
+        #[inline]
+        fn set(border: &mut Self, color: Color) {
+            *border = Self::all(color);
+        }
+    }
+
+    /// `TextColor` is its own property, sprung in Oklab.
+    impl SpringProperty for TextColor {
+        type Component = Self;
+        type Space = OklabColor;
+
+        #[inline]
+        fn get(text: &Self) -> Color {
+            text.0
+        }
+
+        #[inline]
+        fn set(text: &mut Self, color: Color) {
+            text.0 = color;
+        }
+    }
 
     spring_property!(
         /// `ImageNode::color` (the image's tint), in Oklab.
-        pub ImageTint: ImageNode::color as OklabColor
+        pub ImageNodeColor: ImageNode::color as OklabColor
     );
 
     /// A spring on a node's `BackgroundColor`, in Oklab.
-    pub type BackgroundColorSpring = PropertySpring<BackgroundTint>;
+    pub type BackgroundColorSpring = PropertySpring<BackgroundColor>;
     /// A spring on a node's `BorderColor` (all sides), in Oklab.
-    pub type BorderColorSpring = PropertySpring<BorderTint>;
+    pub type BorderColorSpring = PropertySpring<BorderColor>;
     /// A spring on a text's `TextColor`, in Oklab.
-    pub type TextColorSpring = PropertySpring<TextTint>;
+    pub type TextColorSpring = PropertySpring<TextColor>;
     /// A spring on an `ImageNode`'s tint, in Oklab.
-    pub type ImageColorSpring = PropertySpring<ImageTint>;
+    pub type ImageNodeColorSpring = PropertySpring<ImageNodeColor>;
+
+    /// The marker of `BackgroundColor`, which is now its own property.
+    #[deprecated(since = "0.1.0", note = "use `BackgroundColor` itself as the property")]
+    pub type BackgroundTint = BackgroundColor;
+    /// The marker of `BorderColor`, which is now its own property.
+    #[deprecated(since = "0.1.0", note = "use `BorderColor` itself as the property")]
+    pub type BorderTint = BorderColor;
+    /// The marker of `TextColor`, which is now its own property.
+    #[deprecated(since = "0.1.0", note = "use `TextColor` itself as the property")]
+    pub type TextTint = TextColor;
+    /// The marker of `ImageNode::color`, renamed after its component and field.
+    #[deprecated(
+        since = "0.1.0",
+        note = "renamed `ImageNodeColor`, after `ImageNode::color`"
+    )]
+    pub type ImageTint = ImageNodeColor;
+    /// A spring on an `ImageNode`'s tint, renamed after its marker.
+    #[deprecated(since = "0.1.0", note = "renamed `ImageNodeColorSpring`")]
+    pub type ImageColorSpring = ImageNodeColorSpring;
 }
 
 #[cfg(feature = "ui")]
 pub use ui::{
-    BackgroundColorSpring, BackgroundTint, BorderColorSpring, BorderTint, ImageColorSpring,
-    ImageTint, TextColorSpring, TextTint,
+    BackgroundColorSpring, BorderColorSpring, ImageNodeColor, ImageNodeColorSpring, TextColorSpring,
 };
+#[cfg(feature = "ui")]
+#[expect(deprecated, reason = "the old names, kept for a release")]
+pub use ui::{BackgroundTint, BorderTint, ImageColorSpring, ImageTint, TextTint};
 
 /// Springs the colours of sprites (feature `sprite`) and UI nodes (feature `ui`) in Oklab
 /// (part of [`SpringPlugin`](crate::SpringPlugin)). A `Color` field of your own springs with
@@ -88,22 +152,22 @@ impl Plugin for ColorSpringPlugin {
     )]
     fn build(&self, app: &mut App) {
         #[cfg(feature = "sprite")]
-        app.add_plugins(SpringPropertyPlugin::<SpriteTint>::default());
+        app.add_plugins(SpringPropertyPlugin::<SpriteColor>::default());
         #[cfg(all(feature = "sprite", feature = "asset"))]
-        app.add_plugins(crate::asset::SequenceAssetPlugin::<SpriteTint>::default());
+        app.add_plugins(crate::asset::SequenceAssetPlugin::<SpriteColor>::default());
         #[cfg(all(feature = "ui", feature = "asset"))]
         app.add_plugins((
-            crate::asset::SequenceAssetPlugin::<BackgroundTint>::default(),
-            crate::asset::SequenceAssetPlugin::<BorderTint>::default(),
-            crate::asset::SequenceAssetPlugin::<TextTint>::default(),
-            crate::asset::SequenceAssetPlugin::<ImageTint>::default(),
+            crate::asset::SequenceAssetPlugin::<BackgroundColor>::default(),
+            crate::asset::SequenceAssetPlugin::<BorderColor>::default(),
+            crate::asset::SequenceAssetPlugin::<TextColor>::default(),
+            crate::asset::SequenceAssetPlugin::<ImageNodeColor>::default(),
         ));
         #[cfg(feature = "ui")]
         app.add_plugins((
-            SpringPropertyPlugin::<BackgroundTint>::default(),
-            SpringPropertyPlugin::<BorderTint>::default(),
-            SpringPropertyPlugin::<TextTint>::default(),
-            SpringPropertyPlugin::<ImageTint>::default(),
+            SpringPropertyPlugin::<BackgroundColor>::default(),
+            SpringPropertyPlugin::<BorderColor>::default(),
+            SpringPropertyPlugin::<TextColor>::default(),
+            SpringPropertyPlugin::<ImageNodeColor>::default(),
         ));
     }
 }

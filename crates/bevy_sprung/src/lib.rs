@@ -116,19 +116,32 @@ pub mod guides {
 pub struct ReadmeDoctests;
 pub use sprung;
 
-/// The types most apps need: `use bevy_sprung::prelude::*;`.
+/// The types most apps need: `use bevy_sprung::prelude::*;`. Every spring alias and every
+/// property marker of the built-in properties is here (see the README's table of properties).
 pub mod prelude {
+    #[cfg(feature = "asset")]
+    pub use crate::asset::{UsePropertyPreset, UseSequencePreset, UseSpringPreset};
     pub use crate::choreography::{
-        AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted, SequenceInterrupted,
-        SpringGroup, SpringGroupSettled, SpringSequence,
+        Advance, AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted,
+        SequenceInterrupted, SpringGroup, SpringGroupSettled, SpringSequence,
     };
     pub use crate::clock::{DefaultSpringClock, SpringClock};
     #[cfg(feature = "sprite")]
-    pub use crate::color::SpriteColorSpring;
+    #[expect(deprecated, reason = "the old name, kept in the prelude for a release")]
+    pub use crate::color::SpriteTint;
     #[cfg(feature = "ui")]
     pub use crate::color::{
-        BackgroundColorSpring, BorderColorSpring, ImageColorSpring, TextColorSpring,
+        BackgroundColorSpring, BorderColorSpring, ImageNodeColor, ImageNodeColorSpring,
+        TextColorSpring,
     };
+    #[cfg(feature = "ui")]
+    #[expect(
+        deprecated,
+        reason = "the old names, kept in the prelude for a release"
+    )]
+    pub use crate::color::{BackgroundTint, BorderTint, ImageColorSpring, ImageTint, TextTint};
+    #[cfg(feature = "sprite")]
+    pub use crate::color::{SpriteColor, SpriteColorSpring};
     pub use crate::follow::{SpringFollow, TargetMotion};
     #[cfg(feature = "picking")]
     pub use crate::interaction::{
@@ -143,10 +156,12 @@ pub mod prelude {
     #[cfg(feature = "ui")]
     pub use crate::space::{Length, Length2};
     pub use crate::space::{Linear, NeverThroughZero, ShortestAngle, ShortestArc};
-    pub use crate::spin::{Spin, SpinSpring};
+    #[expect(deprecated, reason = "the old name, kept in the prelude for a release")]
+    pub use crate::spin::SpinSpring;
+    pub use crate::spin::{Spin, SpinAngle, SpinAngleSpring};
     pub use crate::spring::{
-        PropertySpring, SpringAsleep, SpringMotion, SpringSettled, SpringSystems, SpringTargetMut,
-        SpringWoke,
+        PropertySpring, SkipFrames, SpringAsleep, SpringMotion, SpringSettled, SpringSystems,
+        SpringTargetMut, SpringWoke,
     };
     pub use crate::spring_property;
     pub use crate::transform::{
@@ -155,8 +170,18 @@ pub mod prelude {
     };
     #[cfg(feature = "ui")]
     pub use crate::ui::{
-        NodePositionSpring, NodeSizeSpring, UiRotationSpring, UiScaleSpring, UiTranslationSpring,
+        NodeBottom, NodeBottomSpring, NodeHeight, NodeHeightSpring, NodeLeft, NodeLeftSpring,
+        NodePosition, NodePositionSpring, NodeRight, NodeRightSpring, NodeSize, NodeSizeSpring,
+        NodeTop, NodeTopSpring, NodeWidth, NodeWidthSpring, UiTransformRotation,
+        UiTransformRotationSpring, UiTransformScale, UiTransformScaleSpring,
+        UiTransformTranslation, UiTransformTranslationSpring,
     };
+    #[cfg(feature = "ui")]
+    #[expect(
+        deprecated,
+        reason = "the old names, kept in the prelude for a release"
+    )]
+    pub use crate::ui::{UiRotationSpring, UiScaleSpring, UiTranslationSpring};
     #[cfg(feature = "visibility")]
     pub use crate::visibility::CatchUpWhenHidden;
     pub use crate::{SpringPlugin, SpringPropertyPlugin};

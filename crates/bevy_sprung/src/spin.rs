@@ -14,7 +14,7 @@ use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_s
 /// `UiTransform` turns) whenever the `Spin` changes.
 ///
 /// A [`RotationSpring`](crate::transform::RotationSpring) moves between orientations the short way, so a
-/// whole turn is no motion to it: 0 and 2π are the same orientation. A [`SpinSpring`] springs
+/// whole turn is no motion to it: 0 and 2π are the same orientation. A [`SpinAngleSpring`] springs
 /// the angle itself, so a coin flip of 3 turns or a settings cog that turns once on hover (what
 /// `bevy_tweening`'s `TransformRotateZLens` tweens) springs through every turn. The angle is not
 /// wrapped; after many turns, subtract the same multiple of τ from it and from the spring's
@@ -34,7 +34,7 @@ use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_s
 ///     commands.spawn((
 ///         Transform::default(),
 ///         Spin::new(Dir3::X, 0.0),
-///         SpinSpring::new(Spring::bouncy(), 3.0 * TAU),
+///         SpinAngleSpring::new(Spring::bouncy(), 3.0 * TAU),
 ///     ));
 /// }
 /// # let mut app = App::new();
@@ -72,7 +72,7 @@ impl Spin {
         Self::new(Dir3::Z, angle)
     }
 
-    /// The rotation this spin sets. A non-finite angle gives the identity (a [`SpinSpring`]
+    /// The rotation this spin sets. A non-finite angle gives the identity (a [`SpinAngleSpring`]
     /// never writes one).
     #[inline]
     #[must_use]
@@ -105,7 +105,11 @@ spring_property!(
 );
 
 /// A spring on [`Spin::angle`]: whole turns, see [`Spin`].
-pub type SpinSpring = PropertySpring<SpinAngle>;
+pub type SpinAngleSpring = PropertySpring<SpinAngle>;
+
+/// A spring on [`SpinAngle`], renamed after its marker.
+#[deprecated(since = "0.1.0", note = "renamed `SpinAngleSpring`")]
+pub type SpinSpring = SpinAngleSpring;
 
 /// Sets `Transform::rotation` from each [`Spin`] that changed, writing only a rotation that
 /// differs.
@@ -131,7 +135,7 @@ fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
     }
 }
 
-/// [`Spin`] and [`SpinSpring`]: whole turns (part of [`SpringPlugin`](crate::SpringPlugin)).
+/// [`Spin`] and [`SpinAngleSpring`]: whole turns (part of [`SpringPlugin`](crate::SpringPlugin)).
 /// A spin sets the rotation right after its spring stepped, in the spin property's
 /// [`SpringPhase::Observe`], so it is ordered with every other property that writes a
 /// `Transform`.

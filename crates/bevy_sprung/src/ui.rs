@@ -73,11 +73,11 @@ spring_property!(
 );
 
 /// A spring on [`UiTransformTranslation`].
-pub type UiTranslationSpring = PropertySpring<UiTransformTranslation>;
+pub type UiTransformTranslationSpring = PropertySpring<UiTransformTranslation>;
 /// A spring on [`UiTransformScale`].
-pub type UiScaleSpring = PropertySpring<UiTransformScale>;
+pub type UiTransformScaleSpring = PropertySpring<UiTransformScale>;
 /// A spring on [`UiTransformRotation`].
-pub type UiRotationSpring = PropertySpring<UiTransformRotation>;
+pub type UiTransformRotationSpring = PropertySpring<UiTransformRotation>;
 /// A spring on [`NodeSize`].
 pub type NodeSizeSpring = PropertySpring<NodeSize>;
 /// A spring on [`NodePosition`].
@@ -94,6 +94,16 @@ pub type NodeTopSpring = PropertySpring<NodeTop>;
 pub type NodeRightSpring = PropertySpring<NodeRight>;
 /// A spring on [`NodeBottom`].
 pub type NodeBottomSpring = PropertySpring<NodeBottom>;
+
+/// A spring on [`UiTransformTranslation`], renamed after its marker.
+#[deprecated(since = "0.1.0", note = "renamed `UiTransformTranslationSpring`")]
+pub type UiTranslationSpring = UiTransformTranslationSpring;
+/// A spring on [`UiTransformScale`], renamed after its marker.
+#[deprecated(since = "0.1.0", note = "renamed `UiTransformScaleSpring`")]
+pub type UiScaleSpring = UiTransformScaleSpring;
+/// A spring on [`UiTransformRotation`], renamed after its marker.
+#[deprecated(since = "0.1.0", note = "renamed `UiTransformRotationSpring`")]
+pub type UiRotationSpring = UiTransformRotationSpring;
 
 /// Springs UI geometry: `UiTransform` translation, scale and rotation and `Node` sizes and
 /// offsets (part of [`SpringPlugin`](crate::SpringPlugin) with feature `ui`; UI colours are in

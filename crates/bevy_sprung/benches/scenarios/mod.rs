@@ -135,9 +135,9 @@ pub(crate) enum Method {
     },
     /// [`TranslationSpring`]s asleep on their targets.
     SpringsAtRest,
-    /// [`UiScaleSpring`]s: a UI property.
+    /// [`UiTransformScaleSpring`]s: a UI property.
     UiScaleSprings,
-    /// [`UiTranslationSpring`]s: a UI property in `Val` lengths (pixels), a hover lift or a
+    /// [`UiTransformTranslationSpring`]s: a UI property in `Val` lengths (pixels), a hover lift or a
     /// slide-in.
     UiTranslationSprings,
     /// spring_damper 0.1.1's `TranslationSpring`, with `springs` distinct half-lives.
@@ -289,7 +289,7 @@ impl Method {
                 world.spawn_batch((0..count).map(|i| {
                     (
                         UiTransform::default(),
-                        UiScaleSpring::new(sprung_spring(HALF_LIFE), target(i).truncate()),
+                        UiTransformScaleSpring::new(sprung_spring(HALF_LIFE), target(i).truncate()),
                     )
                 }));
             }
@@ -298,7 +298,7 @@ impl Method {
                     let target = target(i);
                     (
                         UiTransform::default(),
-                        UiTranslationSpring::new(
+                        UiTransformTranslationSpring::new(
                             sprung_spring(HALF_LIFE),
                             Val2::px(target.x, target.y),
                         ),

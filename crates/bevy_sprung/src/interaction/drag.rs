@@ -13,7 +13,7 @@ use super::velocity::ReleaseVelocity;
 use crate::spring::trigger_if_alive;
 use crate::transform::TranslationSpring;
 #[cfg(feature = "ui")]
-use crate::ui::UiTranslationSpring;
+use crate::ui::UiTransformTranslationSpring;
 
 /// How a dragged entity follows the pointer.
 #[derive(Reflect, Debug, Clone, Copy, PartialEq)]
@@ -177,7 +177,7 @@ impl DragBounds {
 /// - a [`TranslationSpring`] (world space: sprites, meshes; positions are the `Transform`'s,
 ///   in its parent's space). The pointer is projected through the camera that picked the
 ///   entity onto the plane through the entity facing that camera;
-/// - or, with the `ui` feature, a [`UiTranslationSpring`](crate::ui::UiTranslationSpring)
+/// - or, with the `ui` feature, a [`UiTransformTranslationSpring`](crate::ui::UiTransformTranslationSpring)
 ///   (UI nodes; positions are `UiTransform::translation` in logical pixels, `z` unused).
 ///
 /// A world drag moves the entity in the plane through it facing the camera, and the release
@@ -477,7 +477,7 @@ type Body = (
     &'static mut SpringDrag,
     Option<&'static mut TranslationSpring>,
     Option<&'static mut Transform>,
-    Option<&'static mut UiTranslationSpring>,
+    Option<&'static mut UiTransformTranslationSpring>,
     Option<&'static mut UiTransform>,
     Option<&'static ChildOf>,
     Option<&'static GlobalTransform>,
@@ -502,7 +502,7 @@ fn pixels(value: Val2) -> Vec3 {
 enum Moved<'a> {
     World(Mut<'a, TranslationSpring>, Mut<'a, Transform>),
     #[cfg(feature = "ui")]
-    Ui(Mut<'a, UiTranslationSpring>, Mut<'a, UiTransform>),
+    Ui(Mut<'a, UiTransformTranslationSpring>, Mut<'a, UiTransform>),
 }
 
 impl Moved<'_> {
@@ -616,7 +616,7 @@ fn start_drag(event: On<Pointer<DragStart>>, context: DragContext, mut bodies: Q
     let (mut drag, moved, parent, world_position) = body(item);
     let Some(mut moved) = moved else {
         warn_once!(
-            "bevy_sprung: a SpringDrag needs a TranslationSpring (or a UiTranslationSpring) \
+            "bevy_sprung: a SpringDrag needs a TranslationSpring (or a UiTransformTranslationSpring) \
              beside it"
         );
         return;

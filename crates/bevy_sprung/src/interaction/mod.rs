@@ -300,12 +300,12 @@ fn update_states(
 ///     commands.spawn((
 ///         Button,
 ///         Node::default(),
-///         UiScaleSpring::new(Spring::bouncy(), Vec2::ONE),
+///         UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ONE),
 ///         InteractionTargets::<bevy_sprung::ui::UiTransformScale>::new(Vec2::ONE)
 ///             .hovered(Vec2::splat(1.08))
 ///             .pressed(Vec2::splat(0.94)),
 ///         BackgroundColorSpring::new(Spring::smooth(), Color::srgb(0.2, 0.2, 0.3)),
-///         InteractionTargets::<bevy_sprung::color::BackgroundTint>::new(Color::srgb(0.2, 0.2, 0.3))
+///         InteractionTargets::<BackgroundColor>::new(Color::srgb(0.2, 0.2, 0.3))
 ///             .hovered(Color::srgb(0.3, 0.3, 0.5)),
 ///     ));
 /// }
