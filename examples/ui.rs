@@ -1,8 +1,9 @@
 //! A menu that springs instead of tweening: the side panel slides and fades in and out, its
 //! buttons lift and glow on hover and squash on press, and a badge pops in with a whole turn (a
 //! `Spin`: a rotation spring takes the short way, and a whole turn is no way at all). Every
-//! animation is a spring component on the node; retargeting mid-animation (hover, then leave at
-//! once) bends the motion smoothly instead of restarting a tween.
+//! animation is a spring component on the node; the buttons say their targets per pointer state
+//! with `InteractionTargets`, and a state change (hover, then leave at once) bends the motion
+//! smoothly instead of restarting a tween.
 //!
 //! Click "Menu" (or press M) to open and close the panel. Without mouse input the example plays
 //! a short scripted tour, so it shows the same motion in CI screenshots.
@@ -11,7 +12,11 @@
 //! cargo run --example ui
 //! ```
 
+use bevy::camera::NormalizedRenderTarget;
 use bevy::input::mouse::MouseMotion;
+use bevy::picking::backend::HitData;
+use bevy::picking::events::{Enter, Leave, Pointer, Press, Release};
+use bevy::picking::pointer::{Location, PointerButton, PointerId};
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 
@@ -32,26 +37,23 @@ struct MenuButton;
 #[derive(Component)]
 struct Badge;
 
-/// What a button looks like it is doing: from `Interaction`, or from the tour.
-#[derive(Component, Default, Clone, Copy, PartialEq)]
-enum Look {
-    #[default]
-    Idle,
-    Hovered,
-    Pressed,
-}
-
 #[derive(Resource, Default)]
 struct Menu {
     open: bool,
 }
 
-/// The scripted tour runs until the user moves the mouse or presses a key.
+/// The scripted tour runs until the user moves the mouse or presses a key: a pointer of its
+/// own that hovers and presses the buttons, as a user would.
 #[derive(Resource)]
 struct Tour {
     running: bool,
     elapsed: f32,
+    /// The button the tour's pointer is over, and whether it presses it.
+    on: Option<(Entity, bool)>,
 }
+
+/// The tour's pointer.
+const TOUR: PointerId = PointerId::Custom(bevy::asset::uuid::Uuid::from_u128(0x5B2));
 
 fn main() {
     App::new()
@@ -72,12 +74,10 @@ fn main() {
         .insert_resource(Tour {
             running: true,
             elapsed: 0.0,
+            on: None,
         })
         .add_systems(Startup, setup)
-        .add_systems(
-            Update,
-            (tour, interactions, toggle, animate_menu, animate_buttons).chain(),
-        )
+        .add_systems(Update, (tour, toggle, animate_menu).chain())
         .run();
 }
 
@@ -95,25 +95,38 @@ fn panel_button() -> Node {
     }
 }
 
-/// A button with its springs: background, border, scale and lift, and its label's colour.
+/// A button with its springs and their targets per pointer state: hover lifts and lights it,
+/// press squashes and darkens it. A state change retargets each spring, keeping its velocity.
 fn button(label: &str, node: Node) -> impl Bundle {
+    let edge = Color::srgb(0.3, 0.33, 0.4);
     (
         Button,
-        Look::Idle,
         node,
         BackgroundColor(IDLE),
-        BorderColor::all(Color::srgb(0.3, 0.33, 0.4)),
+        BorderColor::all(edge),
         UiTransform::default(),
-        // One spring per property the button animates.
+        // One spring per property the button animates...
         BackgroundColorSpring::new(Spring::snappy(), IDLE),
-        BorderColorSpring::new(Spring::snappy(), Color::srgb(0.3, 0.33, 0.4)),
+        BorderColorSpring::new(Spring::snappy(), edge),
         UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ONE),
         UiTransformTranslationSpring::new(Spring::snappy(), Val2::ZERO),
+        // ...and its target in each state (pressed falls back to hovered where unset).
+        InteractionTargets::<BackgroundColor>::new(IDLE)
+            .hovered(HOVERED)
+            .pressed(PRESSED),
+        InteractionTargets::<BorderColor>::new(edge)
+            .hovered(Color::srgb(0.55, 0.7, 1.0))
+            .pressed(Color::srgb(0.4, 0.55, 0.9)),
+        InteractionTargets::<UiTransformScale>::new(Vec2::ONE)
+            .hovered(Vec2::splat(1.06))
+            .pressed(Vec2::splat(0.94)),
+        InteractionTargets::<UiTransformTranslation>::new(Val2::ZERO)
+            .hovered(Val2::px(0.0, -3.0))
+            .pressed(Val2::px(0.0, 1.0)),
         children![(
             Text::new(label),
             TextFont::from_font_size(20.0),
-            TextColor(Color::srgb(0.8, 0.82, 0.88)),
-            TextColorSpring::new(Spring::snappy(), Color::srgb(0.8, 0.82, 0.88)),
+            TextColor(Color::srgb(0.85, 0.87, 0.92)),
         )],
     )
 }
@@ -208,7 +221,8 @@ fn tour(
     mut menu: ResMut<Menu>,
     mut motion: MessageReader<MouseMotion>,
     keys: Res<ButtonInput<KeyCode>>,
-    mut buttons: Query<&mut Look, (With<Button>, Without<MenuButton>)>,
+    panel: Single<&Children, With<Panel>>,
+    mut commands: Commands,
 ) {
     if motion.read().count() > 0 || keys.get_just_pressed().count() > 0 {
         tour.running = false;
@@ -219,22 +233,72 @@ fn tour(
     tour.elapsed += time.delta_secs();
     let t = tour.elapsed % 7.0;
     menu.open = (0.3..5.5).contains(&t);
-    // Hover each button in turn for 0.6 s from 1.2 s on; press the third.
-    let hovered = hovered_button(t);
-    for (index, mut look) in buttons.iter_mut().enumerate() {
-        let wanted = if hovered == Some(index) {
-            if index == 2 && (t - 1.2) % 0.6 > 0.3 {
-                Look::Pressed
-            } else {
-                Look::Hovered
-            }
-        } else {
-            Look::Idle
-        };
-        if *look != wanted {
-            *look = wanted;
+    // Hover each button in turn for 0.6 s from 1.2 s on; press the third in the second half.
+    let wanted = hovered_button(t)
+        .and_then(|index| panel.get(index).map(|&button| (index, button)))
+        .map(|(index, button)| (button, index == 2 && (t - 1.2) % 0.6 > 0.3));
+    if wanted == tour.on {
+        return;
+    }
+    if let Some((button, pressed)) = tour.on {
+        if pressed {
+            commands.trigger(pointer(
+                button,
+                Release {
+                    button: PointerButton::Primary,
+                    hit: hit(),
+                },
+            ));
+        }
+        if wanted.is_none_or(|(next, _)| next != button) {
+            commands.trigger(pointer(
+                button,
+                Leave {
+                    hit: hit(),
+                    was_in_bounds: true,
+                },
+            ));
         }
     }
+    if let Some((button, pressed)) = wanted {
+        if tour.on.is_none_or(|(last, _)| last != button) {
+            commands.trigger(pointer(
+                button,
+                Enter {
+                    hit: hit(),
+                    is_in_bounds: true,
+                },
+            ));
+        }
+        if pressed {
+            commands.trigger(pointer(
+                button,
+                Press {
+                    button: PointerButton::Primary,
+                    hit: hit(),
+                    count: 1,
+                },
+            ));
+        }
+    }
+    tour.on = wanted;
+}
+
+/// The tour's pointer event `event` on `button`.
+fn pointer<E: core::fmt::Debug + Clone + Reflect>(button: Entity, event: E) -> Pointer<E> {
+    let location = Location {
+        target: NormalizedRenderTarget::None {
+            width: 1280,
+            height: 720,
+        },
+        position: Vec2::ZERO,
+    };
+    Pointer::new(TOUR, location, event, button)
+}
+
+/// Where the tour's pointer hits: nowhere in particular.
+fn hit() -> HitData {
+    HitData::new(Entity::PLACEHOLDER, 0.0, None, None)
 }
 
 /// Which button the tour hovers at `t` seconds into its loop: one every 0.6 s from 1.2 s on.
@@ -245,23 +309,6 @@ fn tour(
 )]
 fn hovered_button(t: f32) -> Option<usize> {
     (t >= 1.2).then(|| ((t - 1.2) / 0.6) as usize)
-}
-
-/// With the user in control, buttons look like their `Interaction`.
-fn interactions(
-    tour: Res<Tour>,
-    mut buttons: Query<(&Interaction, &mut Look), Changed<Interaction>>,
-) {
-    if tour.running {
-        return;
-    }
-    for (interaction, mut look) in &mut buttons {
-        *look = match interaction {
-            Interaction::Pressed => Look::Pressed,
-            Interaction::Hovered => Look::Hovered,
-            Interaction::None => Look::Idle,
-        };
-    }
 }
 
 fn toggle(
@@ -302,55 +349,4 @@ fn animate_menu(
     let (pop, turn) = &mut *badge;
     pop.set_target(Vec2::splat(badge_scale));
     turn.set_target(badge_turn);
-}
-
-/// Hover lifts and lights a button; press squashes and darkens it.
-fn animate_buttons(
-    mut buttons: Query<
-        (
-            &Look,
-            &Children,
-            &mut BackgroundColorSpring,
-            &mut BorderColorSpring,
-            &mut UiTransformScaleSpring,
-            &mut UiTransformTranslationSpring,
-        ),
-        Changed<Look>,
-    >,
-    mut labels: Query<&mut TextColorSpring>,
-) {
-    for (look, children, mut background, mut border, mut scale, mut lift) in &mut buttons {
-        let (color, edge, size, rise, text) = match look {
-            Look::Idle => (
-                IDLE,
-                Color::srgb(0.3, 0.33, 0.4),
-                1.0,
-                0.0,
-                Color::srgb(0.8, 0.82, 0.88),
-            ),
-            Look::Hovered => (
-                HOVERED,
-                Color::srgb(0.55, 0.7, 1.0),
-                1.06,
-                -3.0,
-                Color::WHITE,
-            ),
-            Look::Pressed => (
-                PRESSED,
-                Color::srgb(0.4, 0.55, 0.9),
-                0.94,
-                1.0,
-                Color::srgb(0.85, 0.9, 1.0),
-            ),
-        };
-        background.set_target(color);
-        border.set_target(edge);
-        scale.set_target(Vec2::splat(size));
-        lift.set_target(Val2::px(0.0, rise));
-        for child in children {
-            if let Ok(mut label) = labels.get_mut(*child) {
-                label.set_target(text);
-            }
-        }
-    }
 }
