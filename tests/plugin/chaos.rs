@@ -593,6 +593,7 @@ const OPERATIONS: &[(&str, fn(&mut World))] = &[
     ("shake", shake),
     ("squash", squash),
     ("catch up", catch_up),
+    ("skip frames", skip_frames),
     ("drag component", drag_component),
     ("drag start", |world| pointer_drag(world, 0)),
     ("drag move", |world| pointer_drag(world, 1)),
@@ -728,9 +729,18 @@ fn sequence(world: &mut World) {
             random.unit(),
         )
     });
+    let within = draw(world, |random| random.chance(0.5));
     let mut entity = world.entity_mut(entity);
     if entity.contains::<SpringSequence<Translation>>() {
         entity.remove::<SpringSequence<Translation>>();
+    } else if within {
+        entity.insert(
+            SpringSequence::<Translation>::new()
+                .hold(delay)
+                .then_within(0.5, steps[0])
+                .hold(seconds)
+                .then(steps[2]),
+        );
     } else {
         entity.insert(
             SpringSequence::<Translation>::new()
@@ -811,6 +821,23 @@ fn catch_up(world: &mut World) {
             ViewVisibility::HIDDEN
         };
         entity.insert((CatchUpWhenHidden, visibility));
+    }
+}
+
+/// Springs skip frames for the app's own reasons, or step every frame again.
+fn skip_frames(world: &mut World) {
+    let Some(entity) = target_of(world, None, "skip frames") else {
+        return;
+    };
+    let skip = draw(world, |random| random.below(3));
+    let mut entity = world.entity_mut(entity);
+    match skip {
+        0 => {
+            entity.remove::<SkipFrames>();
+        }
+        _ => {
+            entity.insert(SkipFrames(skip == 1));
+        }
     }
 }
 
@@ -1163,6 +1190,9 @@ fn calm(app: &mut App) {
     }
     for mut visibility in world.query::<&mut ViewVisibility>().iter_mut(world) {
         *visibility = ViewVisibility::VISIBLE;
+    }
+    for mut skip in world.query::<&mut SkipFrames>().iter_mut(world) {
+        skip.0 = false;
     }
     let dragged: Vec<Entity> = world
         .query::<(Entity, &SpringDrag)>()
