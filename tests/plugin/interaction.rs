@@ -290,7 +290,7 @@ fn ui_card(app: &mut App, drag: SpringDrag) -> Entity {
         .id()
 }
 
-fn ui_position(app: &App, entity: Entity) -> Vec2 {
+pub(crate) fn ui_position(app: &App, entity: Entity) -> Vec2 {
     let translation = app.world().get::<UiTransform>(entity).unwrap().translation;
     match (translation.x, translation.y) {
         (Val::Px(x), Val::Px(y)) => Vec2::new(x, y),

@@ -11,7 +11,7 @@ use bevy_sprung::transform::Scale;
 use bevy_sprung::ui::{NodeSize, UiTransformRotation, UiTransformTranslationSpring};
 
 use crate::harness::{app, asleep, assert_stepped_from, run, spawn_translation, translation};
-use crate::interaction::{drag, drag_end, drag_start};
+use crate::interaction::{drag, drag_end, drag_start, ui_position};
 
 /// Marks an entity whose settle event an observer saw.
 #[derive(Component)]
@@ -368,14 +368,6 @@ fn a_group_whose_members_all_vanish_reports_once() {
         2,
         "group b vanished"
     );
-}
-
-fn ui_position(app: &App, entity: Entity) -> Vec2 {
-    let translation = app.world().get::<UiTransform>(entity).unwrap().translation;
-    match (translation.x, translation.y) {
-        (Val::Px(x), Val::Px(y)) => Vec2::new(x, y),
-        other => panic!("not pixels: {other:?}"),
-    }
 }
 
 /// A drag whose spring (or value) is removed mid-drag ends on release: the entity is no longer

@@ -1,6 +1,5 @@
 //! Driving sequences, and the events they trigger.
 
-use core::fmt;
 use core::marker::PhantomData;
 
 use bevy::prelude::*;
@@ -9,7 +8,7 @@ use super::sequence::{Advance, SequencePhase, SpringSequence, Tick};
 use crate::clock::SpringTime;
 use crate::control::SpringControl;
 use crate::property::SpringProperty;
-use crate::spring::{SpringMotion, trigger_if_alive};
+use crate::spring::{SpringMotion, property_event, trigger_if_alive};
 
 /// Triggered on an entity when its [`SpringSequence<P>`] has played its last step: the
 /// tween-completion event for a whole choreography.
@@ -30,40 +29,8 @@ pub struct SequenceInterrupted<P: SpringProperty> {
     property: PhantomData<fn() -> P>,
 }
 
-macro_rules! entity_event {
-    ($name:ident) => {
-        impl<P: SpringProperty> $name<P> {
-            /// The event for `entity`.
-            #[must_use]
-            pub fn new(entity: Entity) -> Self {
-                Self {
-                    entity,
-                    property: PhantomData,
-                }
-            }
-        }
-
-        impl<P: SpringProperty> Clone for $name<P> {
-            fn clone(&self) -> Self {
-                *self
-            }
-        }
-
-        impl<P: SpringProperty> Copy for $name<P> {}
-
-        impl<P: SpringProperty> fmt::Debug for $name<P> {
-            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.debug_struct(stringify!($name))
-                    .field("property", &P::short_type_path())
-                    .field("entity", &self.entity)
-                    .finish()
-            }
-        }
-    };
-}
-
-entity_event!(SequenceCompleted);
-entity_event!(SequenceInterrupted);
+property_event!(SequenceCompleted);
+property_event!(SequenceInterrupted);
 
 /// Before property `P`'s springs step: moves every playing sequence on (a delay that ran out,
 /// a step that settled or timed out), detects interruptions, and triggers the events.

@@ -1,11 +1,47 @@
 //! Events the springs trigger.
 
-use core::fmt;
 use core::marker::PhantomData;
 
 use bevy::prelude::*;
 
 use crate::property::SpringProperty;
+
+/// Implements what an entity event about one property's spring has: `new(entity)`, `Clone`,
+/// `Copy` and a `Debug` that names the property. The event is a struct of an `entity: Entity`
+/// and a `property: PhantomData<fn() -> P>`.
+macro_rules! property_event {
+    ($name:ident) => {
+        impl<P: $crate::property::SpringProperty> $name<P> {
+            /// The event for `entity`.
+            #[must_use]
+            pub fn new(entity: ::bevy::prelude::Entity) -> Self {
+                Self {
+                    entity,
+                    property: ::core::marker::PhantomData,
+                }
+            }
+        }
+
+        impl<P: $crate::property::SpringProperty> Clone for $name<P> {
+            fn clone(&self) -> Self {
+                *self
+            }
+        }
+
+        impl<P: $crate::property::SpringProperty> Copy for $name<P> {}
+
+        impl<P: $crate::property::SpringProperty> ::core::fmt::Debug for $name<P> {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                f.debug_struct(stringify!($name))
+                    .field("property", &P::short_type_path())
+                    .field("entity", &self.entity)
+                    .finish()
+            }
+        }
+    };
+}
+
+pub(crate) use property_event;
 
 /// Triggered once when the spring on property `P` of `entity` comes to rest and goes to sleep:
 /// the replacement for a tween's completion event.
@@ -33,25 +69,6 @@ pub struct SpringSettled<P: SpringProperty> {
     property: PhantomData<fn() -> P>,
 }
 
-impl<P: SpringProperty> SpringSettled<P> {
-    /// The event for `entity`.
-    #[must_use]
-    pub fn new(entity: Entity) -> Self {
-        Self {
-            entity,
-            property: PhantomData,
-        }
-    }
-}
-
-impl<P: SpringProperty> Clone for SpringSettled<P> {
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-
-impl<P: SpringProperty> Copy for SpringSettled<P> {}
-
 /// Triggered when the sleeping spring on property `P` of `entity` wakes: its target changed,
 /// it was kicked, or something else wrote its property. The moment a motion starts (a sound, a
 /// group that tracks what moves); it may settle again within the same frame.
@@ -77,33 +94,8 @@ pub struct SpringWoke<P: SpringProperty> {
     property: PhantomData<fn() -> P>,
 }
 
-impl<P: SpringProperty> SpringWoke<P> {
-    /// The event for `entity`.
-    #[must_use]
-    pub fn new(entity: Entity) -> Self {
-        Self {
-            entity,
-            property: PhantomData,
-        }
-    }
-}
-
-impl<P: SpringProperty> Clone for SpringWoke<P> {
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-
-impl<P: SpringProperty> Copy for SpringWoke<P> {}
-
-impl<P: SpringProperty> fmt::Debug for SpringWoke<P> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("SpringWoke")
-            .field("property", &P::short_type_path())
-            .field("entity", &self.entity)
-            .finish()
-    }
-}
+property_event!(SpringSettled);
+property_event!(SpringWoke);
 
 /// Triggers `event` when the commands are applied, if its entity is still alive then: an
 /// observer of an earlier event (this frame's settle of another spring, say) may have despawned
@@ -119,13 +111,4 @@ where
             world.trigger(event);
         }
     });
-}
-
-impl<P: SpringProperty> fmt::Debug for SpringSettled<P> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("SpringSettled")
-            .field("property", &P::short_type_path())
-            .field("entity", &self.entity)
-            .finish()
-    }
 }
