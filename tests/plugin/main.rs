@@ -11,6 +11,7 @@ mod harness;
 mod arrival;
 mod assets;
 mod bad_input;
+mod camera;
 mod catch_up;
 mod chaos;
 mod choreography;

@@ -123,7 +123,7 @@ impl SpringFollow {
 }
 
 /// The world position of `entity`: its `Transform`, placed by its parent's `GlobalTransform`.
-fn world_position(
+pub(crate) fn world_position(
     entity: Entity,
     transforms: &Query<(&Transform, Option<&ChildOf>)>,
     globals: &Query<&GlobalTransform>,

@@ -75,6 +75,8 @@ pub mod property;
 
 #[cfg(feature = "asset")]
 pub mod asset;
+#[cfg(feature = "camera")]
+pub mod camera;
 pub mod choreography;
 pub mod clock;
 #[cfg(feature = "color")]
@@ -108,6 +110,12 @@ pub mod guides {
     #[cfg(all(feature = "ui", feature = "asset"))]
     #[doc = include_str!("../docs/from-bevy-tweening.md")]
     pub mod from_bevy_tweening {}
+
+    /// Camera rigs, concept by concept: each Cinemachine, smooth-bevy-cameras and `bevy_dolly`
+    /// idea and the code that does it with [`CameraRig`](crate::camera::CameraRig).
+    #[cfg(feature = "camera")]
+    #[doc = include_str!("../docs/camera.md")]
+    pub mod camera {}
 }
 
 // The README's examples are compiled and run as doc tests.
@@ -121,6 +129,11 @@ pub use sprung;
 pub mod prelude {
     #[cfg(feature = "asset")]
     pub use crate::asset::{UsePropertyPreset, UseSequencePreset, UseSpringPreset};
+    #[cfg(feature = "camera")]
+    pub use crate::camera::{
+        CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, DeadZone, GroupFraming,
+        LookAhead, OrbitRig, ScreenPosition,
+    };
     pub use crate::choreography::{
         Advance, AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted,
         SequenceInterrupted, SpringGroup, SpringGroupSettled, SpringSequence,

@@ -160,5 +160,7 @@ impl Plugin for SpringPlugin {
         app.add_plugins(crate::asset::SpringAssetPlugin);
         #[cfg(feature = "picking")]
         app.add_plugins(crate::interaction::SpringInteractionPlugin);
+        #[cfg(feature = "camera")]
+        app.add_plugins(crate::camera::CameraRigPlugin);
     }
 }

@@ -1,0 +1,106 @@
+//! Camera rigs: a camera that follows a goal made of parts — targets, look-ahead, dead zone,
+//! screen position, level bounds, group framing, orbit — every motion on the exact step
+//! (feature `camera`).
+//!
+//! A [`CameraRig`] on a camera entity springs after its [`CameraGoal`]; the parts are further
+//! components on the same entity, and a goal of your own joins in
+//! [`CameraRigSystems::Goal`]. See the [camera guide](crate::guides::camera) for each
+//! Cinemachine, smooth-bevy-cameras and `bevy_dolly` concept and the code that does it here.
+
+mod components;
+mod systems;
+mod view;
+
+use core::any::TypeId;
+
+use bevy::prelude::*;
+
+pub use components::{
+    CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, DeadZone, GroupFraming,
+    LookAhead, OrbitRig, RigHorizontal, RigHorizontalSpring, RigLookAhead, RigLookAheadSpring,
+    RigMotion, RigOrbit, RigOrbitSpring, RigVertical, RigVerticalSpring, RigZoom, RigZoomSpring,
+    ScreenPosition, ZoneUnit,
+};
+
+use crate::property_plugin::SpringPropertyPlugin;
+use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_systems};
+
+/// The stages of a rig's frame in [`SpringUpdate`](crate::spring::SpringUpdate), in this
+/// order. Put a system of your own that computes or changes a [`CameraGoal`] in
+/// [`Goal`](Self::Goal).
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CameraRigSystems {
+    /// [`CameraTargets`] set the goal.
+    Targets,
+    /// Your systems change the goal (or set it, for a rig without targets).
+    Goal,
+    /// The goal's velocity is taken, and the look-ahead, zoom and orbit springs retargeted
+    /// (they step next).
+    Track,
+    /// The dead zone, screen position and confiner shape the centre the camera springs to.
+    Frame,
+    /// The camera's `Transform` and projection are written from the springs.
+    Compose,
+}
+
+/// [`CameraRig`] and its parts (part of [`SpringPlugin`](crate::SpringPlugin) with feature
+/// `camera`). The rig's systems join the spring schedule with the first rig: goals and the
+/// springs they retarget before the rig's springs step, the camera placed after.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct CameraRigPlugin;
+
+impl Plugin for CameraRigPlugin {
+    fn build(&self, app: &mut App) {
+        // In this order: the look-ahead, zoom and orbit step before the centre is framed.
+        app.add_plugins((
+            SpringPropertyPlugin::<RigLookAhead>::default(),
+            SpringPropertyPlugin::<RigZoom>::default(),
+            SpringPropertyPlugin::<RigOrbit>::default(),
+            SpringPropertyPlugin::<RigHorizontal>::default(),
+            SpringPropertyPlugin::<RigVertical>::default(),
+        ))
+        .register_type::<CameraRig>()
+        .register_type::<CameraGoal>()
+        .register_type::<CameraTargets>()
+        .register_type::<LookAhead>()
+        .register_type::<DeadZone>()
+        .register_type::<ScreenPosition>()
+        .register_type::<Confiner>()
+        .register_type::<GroupFraming>()
+        .register_type::<OrbitRig>()
+        .register_type::<RigMotion>();
+        let springs = [TypeId::of::<PropertySpring<RigHorizontal>>()];
+        add_property_systems(app, &springs, |schedule| {
+            // The rig's properties run in the order the plugin added them: look-ahead, zoom,
+            // orbit, horizontal, vertical.
+            schedule
+                .configure_sets(
+                    (
+                        CameraRigSystems::Targets,
+                        CameraRigSystems::Goal,
+                        CameraRigSystems::Track,
+                    )
+                        .chain()
+                        .before(PropertySystems::<RigLookAhead>::default()),
+                )
+                .configure_sets(
+                    CameraRigSystems::Frame
+                        .after(PropertySystems::<RigOrbit>::default())
+                        .in_set(PropertySystems::<RigHorizontal>::phase(SpringPhase::Input)),
+                )
+                .configure_sets(
+                    CameraRigSystems::Compose
+                        .in_set(PropertySystems::<RigVertical>::phase(SpringPhase::Observe)),
+                )
+                .add_systems(
+                    (
+                        systems::sample_targets.in_set(CameraRigSystems::Targets),
+                        systems::track_goals.in_set(CameraRigSystems::Track),
+                        systems::frame_goals.in_set(CameraRigSystems::Frame),
+                        systems::compose_cameras.in_set(CameraRigSystems::Compose),
+                    )
+                        .run_if(any_with_component::<CameraRig>),
+                );
+        });
+    }
+}

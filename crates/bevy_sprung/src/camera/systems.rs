@@ -1,0 +1,383 @@
+//! The rig's frame: targets to goal, goal to spring targets, springs to the camera.
+
+use bevy::camera::{Camera, Projection};
+use bevy::ecs::query::QueryData;
+use bevy::log::warn_once;
+use bevy::prelude::*;
+use bevy::window::{PrimaryWindow, Window};
+
+use super::components::{
+    CameraGoal, CameraRig, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
+    RigHorizontalSpring, RigLookAheadSpring, RigMotion, RigOrbitSpring, RigTracking,
+    RigVerticalSpring, RigZoomSpring, ScreenPosition, orbit_rotation,
+};
+use super::view::{centre_range, ease_into, goal_range, half_extents, viewport_size};
+use crate::clock::SpringTime;
+use crate::follow::world_position;
+use crate::spring::SpringTargetMut;
+
+/// Where each rig's targets are: their weighted centre and spread become its goal.
+pub(super) fn sample_targets(
+    mut rigs: Query<(Entity, &CameraTargets, &Transform, &mut CameraGoal)>,
+    transforms: Query<(&Transform, Option<&ChildOf>)>,
+    globals: Query<&GlobalTransform>,
+) {
+    for (rig, targets, transform, mut goal) in &mut rigs {
+        let found = || {
+            targets.0.iter().filter_map(|target| {
+                let usable =
+                    target.entity != rig && target.weight.is_finite() && target.weight > 0.0;
+                let position =
+                    usable.then(|| world_position(target.entity, &transforms, &globals))??;
+                position.is_finite().then_some((position, target))
+            })
+        };
+        let (sum, weight) = found().fold((Vec3::ZERO, 0.0), |(sum, weight), (position, target)| {
+            (sum + position * target.weight, weight + target.weight)
+        });
+        if weight <= 0.0 || !weight.is_finite() {
+            continue;
+        }
+        let point = sum / weight;
+        if !point.is_finite() {
+            continue;
+        }
+        // The spread along the camera's own right and up axes, radii included.
+        let to_view = transform.rotation.inverse();
+        let spread = found().fold(Vec2::ZERO, |spread, (position, target)| {
+            let local = to_view * (position - point);
+            spread.max(local.truncate().abs() + Vec2::splat(target.radius.max(0.0)))
+        });
+        let spread = if spread.is_finite() {
+            spread
+        } else {
+            goal.spread
+        };
+        if goal.point != point || goal.spread != spread {
+            *goal = CameraGoal { point, spread };
+        }
+    }
+}
+
+/// What a rig reads of its camera to know its view.
+#[derive(QueryData)]
+pub(super) struct View {
+    camera: Option<&'static Camera>,
+    projection: Option<&'static Projection>,
+}
+
+/// The half extents of `view` at `zoom`, `distance` being the camera's distance from the
+/// framed point at zoom 1 (perspective).
+fn view_half_extents(view: &ViewItem, window: Option<&Window>, zoom: f32, distance: f32) -> Vec2 {
+    half_extents(
+        view.projection,
+        viewport_size(view.camera, window),
+        zoom,
+        distance * zoom,
+    )
+}
+
+/// Whether `projection` is a perspective one (a zoom is a distance factor).
+fn is_perspective(projection: Option<&Projection>) -> bool {
+    matches!(projection, Some(Projection::Perspective(_)))
+}
+
+/// The camera's distance from the point it frames at zoom 1.
+fn base_distance(rig: &CameraRig, orbit: Option<&OrbitRig>, motion: &RigMotion) -> f32 {
+    match orbit {
+        Some(_) => motion.orbit().z,
+        None => rig.offset.length(),
+    }
+}
+
+/// The parts of a rig read while its goal is tracked.
+#[derive(QueryData)]
+#[query_data(mutable)]
+pub(super) struct Tracked {
+    rig: &'static CameraRig,
+    goal: &'static CameraGoal,
+    motion: &'static mut RigMotion,
+    tracking: &'static mut RigTracking,
+    zoom: &'static mut RigZoomSpring,
+    framing: Option<&'static GroupFraming>,
+    look_ahead: Option<(&'static LookAhead, &'static mut RigLookAheadSpring)>,
+    orbit: Option<(&'static OrbitRig, &'static mut RigOrbitSpring)>,
+    view: View,
+}
+
+/// After the goal is known: its velocity, and the targets of the look-ahead, zoom and orbit
+/// springs (which step next).
+pub(super) fn track_goals(
+    time: SpringTime,
+    mut rigs: Query<Tracked>,
+    window: Query<&Window, With<PrimaryWindow>>,
+) {
+    let steps = time.steps();
+    let window = window.single().ok();
+    for mut rig in &mut rigs {
+        let first_frame = rig.tracking.last_point.is_none();
+        let point = rig.goal.point;
+        if !point.is_finite() {
+            warn_once!(
+                "bevy_sprung: a CameraGoal's point is not finite; the rig keeps its last goal"
+            );
+            continue;
+        }
+        let dt = steps.dt(rig.zoom.clock());
+        let velocity = match rig.tracking.last_point {
+            Some(last) if dt > 0.0 => (point - last) / dt,
+            _ => Vec3::ZERO,
+        };
+        rig.tracking.point_velocity = if velocity.is_finite() {
+            velocity
+        } else {
+            Vec3::ZERO
+        };
+        rig.tracking.last_point = Some(point);
+
+        let distance = base_distance(
+            rig.rig,
+            rig.orbit.as_ref().map(|(orbit, _)| *orbit),
+            &rig.motion,
+        );
+        if let Some((look_ahead, spring)) = rig.look_ahead.as_mut() {
+            if spring.spring() != &look_ahead.spring {
+                spring.set_spring(look_ahead.spring);
+            }
+            let mut ahead = rig.tracking.point_velocity * look_ahead.time;
+            if !look_ahead.vertical {
+                ahead.y = 0.0;
+            }
+            spring.set_target_if_neq(ahead);
+        }
+
+        if let Some((orbit, spring)) = rig.orbit.as_mut() {
+            if spring.spring() != &orbit.spring {
+                spring.set_spring(orbit.spring);
+            }
+            let aim = orbit.aim(spring.target());
+            spring.set_target_if_neq(aim);
+            if first_frame {
+                rig.motion.set_orbit(aim);
+            }
+        }
+
+        if rig.zoom.spring() != &rig.rig.zoom_spring {
+            let spring = rig.rig.zoom_spring;
+            rig.zoom.set_spring(spring);
+        }
+        let fitted = rig.framing.and_then(|framing| {
+            let half_view = view_half_extents(&rig.view, window, 1.0, distance);
+            framing.zoom_to_fit(rig.goal.spread, half_view)
+        });
+        let zoom = fitted.unwrap_or(rig.rig.zoom);
+        if zoom.is_finite() {
+            let zoom = zoom.max(1e-4);
+            rig.zoom.set_target_if_neq(zoom);
+            if first_frame {
+                rig.motion.set_zoom(zoom);
+            }
+        }
+    }
+}
+
+/// The parts of a rig read while its centre is aimed.
+#[derive(QueryData)]
+#[query_data(mutable)]
+pub(super) struct Framed {
+    rig: &'static CameraRig,
+    goal: &'static CameraGoal,
+    transform: &'static Transform,
+    motion: &'static mut RigMotion,
+    tracking: &'static mut RigTracking,
+    horizontal: &'static mut RigHorizontalSpring,
+    vertical: &'static mut RigVerticalSpring,
+    dead_zone: Option<&'static DeadZone>,
+    screen: Option<&'static ScreenPosition>,
+    confiner: Option<&'static Confiner>,
+    orbit: Option<&'static OrbitRig>,
+    view: View,
+}
+
+/// After the look-ahead, zoom and orbit stepped: the centre the camera springs to (the goal
+/// plus look-ahead, held by the dead zone, moved by the screen position, kept near the
+/// confiner), with its velocity, for the horizontal and vertical springs.
+pub(super) fn frame_goals(
+    time: SpringTime,
+    mut rigs: Query<Framed>,
+    window: Query<&Window, With<PrimaryWindow>>,
+) {
+    let steps = time.steps();
+    let window = window.single().ok();
+    for mut rig in &mut rigs {
+        let zoom = rig.motion.zoom();
+        let distance = base_distance(rig.rig, rig.orbit, &rig.motion);
+        let half_view = view_half_extents(&rig.view, window, zoom, distance);
+        let point = rig.goal.point + rig.motion.look_ahead();
+        if !point.is_finite() {
+            continue;
+        }
+
+        // The dead zone holds the goal until the point leaves the zone around it: the goal is
+        // dragged along by the zone's edge (a backlash, the same for any frame rate).
+        let held = match rig.dead_zone {
+            Some(zone) => {
+                let half = zone.half_size(half_view);
+                let half = Vec3::new(half.x, half.y, half.x);
+                let held = rig.tracking.held.unwrap_or(point);
+                held.clamp(point - half, point + half)
+            }
+            None => point,
+        };
+        rig.tracking.held = Some(held);
+
+        let shift = rig.screen.map_or(Vec3::ZERO, |screen| {
+            let rotation = match rig.orbit {
+                Some(_) => orbit_rotation(rig.motion.orbit().x, rig.motion.orbit().y),
+                None => rig.transform.rotation,
+            };
+            rotation * (screen.0 * 2.0 * half_view).extend(0.0)
+        });
+        let mut centre = held - shift;
+        if let Some(confiner) = rig.confiner {
+            // Beyond this the eased camera stands on the edge: a goal further out would only
+            // make it wait there before coming back.
+            let range = centre_range(confiner.bounds, half_view);
+            let (low, high) = goal_range(range.min.x, range.max.x, confiner.slowing_distance);
+            centre.x = centre.x.clamp(low, high);
+            let (low, high) = goal_range(range.min.y, range.max.y, confiner.slowing_distance);
+            centre.y = centre.y.clamp(low, high);
+        }
+        if !centre.is_finite() {
+            continue;
+        }
+
+        let dt = steps.dt(rig.horizontal.clock());
+        let velocity = match rig.tracking.last_centre {
+            Some(last) if dt > 0.0 => (centre - last) / dt,
+            _ => Vec3::ZERO,
+        };
+        let velocity = if velocity.is_finite() {
+            velocity
+        } else {
+            Vec3::ZERO
+        };
+        let first_frame = rig.tracking.last_centre.is_none();
+        rig.tracking.last_centre = Some(centre);
+        if first_frame {
+            rig.motion.set_centre(centre);
+        }
+
+        if rig.horizontal.spring() != &rig.rig.horizontal {
+            let spring = rig.rig.horizontal;
+            rig.horizontal.set_spring(spring);
+        }
+        rig.horizontal
+            .set_target_if_neq(Vec2::new(centre.x, centre.z));
+        set_target_velocity_if_neq(&mut rig.horizontal, Vec2::new(velocity.x, velocity.z));
+
+        if rig.vertical.spring() != &rig.rig.vertical {
+            let spring = rig.rig.vertical;
+            rig.vertical.set_spring(spring);
+        }
+        if rig.rig.hold_vertical && !first_frame {
+            // Held where it is: the spring comes to rest on its current height.
+            let here = rig.motion.centre().y;
+            rig.vertical.set_target_if_neq(here);
+            set_target_velocity_if_neq(&mut rig.vertical, 0.0);
+        } else {
+            rig.vertical.set_target_if_neq(centre.y);
+            set_target_velocity_if_neq(&mut rig.vertical, velocity.y);
+        }
+    }
+}
+
+/// Sets a spring's target velocity only if it differs (a sleeping spring stays asleep).
+fn set_target_velocity_if_neq<P>(
+    spring: &mut Mut<crate::spring::PropertySpring<P>>,
+    velocity: crate::property::VelocityOf<P>,
+) where
+    P: crate::property::SpringProperty,
+    crate::property::VelocityOf<P>: PartialEq + Into<crate::property::OffsetOf<P>>,
+{
+    if spring.target_velocity() != velocity {
+        spring.set_target_velocity(velocity);
+    }
+}
+
+/// The parts of a rig read to place its camera.
+#[derive(QueryData)]
+#[query_data(mutable)]
+pub(super) struct Composed {
+    rig: &'static CameraRig,
+    motion: &'static RigMotion,
+    transform: &'static mut Transform,
+    projection: Option<&'static mut Projection>,
+    camera: Option<&'static Camera>,
+    confiner: Option<&'static Confiner>,
+    orbit: Option<&'static OrbitRig>,
+}
+
+/// After the springs stepped: the camera's translation, rotation and projection scale, written
+/// only where they change.
+pub(super) fn compose_cameras(
+    mut rigs: Query<Composed>,
+    window: Query<&Window, With<PrimaryWindow>>,
+) {
+    let window = window.single().ok();
+    for mut rig in &mut rigs {
+        let zoom = rig.motion.zoom();
+        let perspective = is_perspective(rig.projection.as_deref());
+        let distance = base_distance(rig.rig, rig.orbit, rig.motion);
+        let half_view = half_extents(
+            rig.projection.as_deref(),
+            viewport_size(rig.camera, window),
+            zoom,
+            distance * zoom,
+        );
+        let mut centre = rig.motion.centre();
+        if let Some(confiner) = rig.confiner {
+            let range = centre_range(confiner.bounds, half_view);
+            let slowing = confiner.slowing_distance;
+            centre.x = ease_into(centre.x, range.min.x, range.max.x, slowing);
+            centre.y = ease_into(centre.y, range.min.y, range.max.y, slowing);
+        }
+        let distance_factor = if perspective { zoom } else { 1.0 };
+        let (translation, rotation) = if rig.orbit.is_some() {
+            let orbit = rig.motion.orbit();
+            let rotation = orbit_rotation(orbit.x, orbit.y);
+            let distance = orbit.z.max(1e-4) * distance_factor;
+            let translation = centre + rotation * Vec3::new(0.0, 0.0, distance);
+            (translation, Some(rotation))
+        } else {
+            let translation = centre + rig.rig.offset * distance_factor;
+            let aim = rig.rig.look_at_goal && translation.distance_squared(centre) > 0.0;
+            let rotation = aim.then(|| {
+                Transform::from_translation(translation)
+                    .looking_at(centre, Vec3::Y)
+                    .rotation
+            });
+            (translation, rotation)
+        };
+        if !translation.is_finite() {
+            continue;
+        }
+        if rig.transform.translation != translation {
+            rig.transform.translation = translation;
+        }
+        if let Some(rotation) = rotation.filter(|rotation| rotation.is_finite())
+            && rig.transform.rotation != rotation
+        {
+            rig.transform.rotation = rotation;
+        }
+        if let Some(mut projection) = rig.projection
+            && let Projection::Orthographic(orthographic) = projection.bypass_change_detection()
+            && orthographic.scale.to_bits() != zoom.to_bits()
+        {
+            let Projection::Orthographic(orthographic) = projection.as_mut() else {
+                continue;
+            };
+            orthographic.scale = zoom;
+        }
+    }
+}

@@ -1,0 +1,517 @@
+//! Camera rigs: dead zone, look-ahead and the steady lag, the confiner, group framing, orbit,
+//! and a goal of the app's own, at 30, 60, 144 and 240 fps.
+
+use std::time::Duration;
+
+use bevy::camera::{OrthographicProjection, Projection};
+use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
+use bevy::window::{PrimaryWindow, WindowResolution};
+use bevy_sprung::camera::{CameraRigSystems, RigMotion};
+use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringUpdate;
+
+use crate::harness::app;
+
+const RATES: [u32; 4] = [30, 60, 144, 240];
+
+#[derive(Component)]
+struct Player;
+
+/// How the player moves: its position at time `t`.
+#[derive(Resource, Clone, Copy)]
+struct Path(fn(f32) -> Vec3);
+
+/// Gameplay: the player is put on its path, in `Update`.
+fn move_player(time: Res<Time>, path: Res<Path>, mut players: Query<&mut Transform, With<Player>>) {
+    for mut transform in &mut players {
+        transform.translation = (path.0)(time.elapsed_secs());
+    }
+}
+
+/// An app at `fps` with a primary window of `width × height` logical pixels and a player on
+/// `path`.
+fn camera_app(fps: u32, (width, height): (u32, u32), path: fn(f32) -> Vec3) -> (App, Entity) {
+    let mut app = app(fps);
+    app.insert_resource(Path(path))
+        .add_systems(Update, move_player);
+    app.world_mut().spawn((
+        Window {
+            resolution: WindowResolution::new(width, height).with_scale_factor_override(1.0),
+            ..default()
+        },
+        PrimaryWindow,
+    ));
+    let player = app
+        .world_mut()
+        .spawn((Player, Transform::from_translation(path(0.0))))
+        .id();
+    (app, player)
+}
+
+/// A 2D camera with its rig.
+fn camera_2d(rig: CameraRig) -> impl Bundle {
+    (
+        Camera2d,
+        Projection::Orthographic(OrthographicProjection::default_2d()),
+        rig,
+    )
+}
+
+fn translation(app: &App, entity: Entity) -> Vec3 {
+    app.world().get::<Transform>(entity).unwrap().translation
+}
+
+/// The half extents of an orthographic camera's view in an `size` window.
+fn half_view(app: &App, camera: Entity, size: Vec2) -> Vec2 {
+    let Some(Projection::Orthographic(projection)) = app.world().get::<Projection>(camera) else {
+        panic!("not orthographic");
+    };
+    size * 0.5 * projection.scale
+}
+
+#[test]
+fn a_target_moving_inside_the_dead_zone_never_writes_the_camera() {
+    for fps in RATES {
+        // ±60 px around x = 100, inside a zone 160 px wide (a fifth of 800).
+        let (mut app, player) = camera_app(fps, (800, 600), |t| {
+            Vec3::new(100.0 + 60.0 * (3.0 * t).sin(), 20.0 * (2.0 * t).cos(), 0.0)
+        });
+        let camera = app
+            .world_mut()
+            .spawn((
+                camera_2d(CameraRig::new(Spring::smooth())),
+                CameraTargets::single(player),
+                DeadZone::view(Vec2::new(0.2, 0.2)),
+            ))
+            .id();
+        app.update();
+        let start = translation(&app, camera);
+        let written = app
+            .world()
+            .entity(camera)
+            .get_ref::<Transform>()
+            .unwrap()
+            .last_changed();
+        for _ in 0..fps * 3 {
+            app.update();
+        }
+        let transform = app.world().entity(camera).get_ref::<Transform>().unwrap();
+        assert_eq!(
+            transform.last_changed(),
+            written,
+            "{fps} fps: the camera was written"
+        );
+        assert_eq!(transform.translation, start);
+        assert!(
+            app.world()
+                .get::<SpringAsleep<bevy_sprung::camera::RigHorizontal>>(camera)
+                .is_some()
+        );
+
+        // Leaving the zone moves the camera: the target jumps 300 px right.
+        app.insert_resource(Path(|t| Vec3::new(400.0, 0.0, 0.0) + Vec3::X * t * 0.0));
+        for _ in 0..fps * 3 {
+            app.update();
+        }
+        // It rests with the target on the zone's edge, 80 px from the centre.
+        let x = translation(&app, camera).x;
+        assert!((x - 320.0).abs() < 0.01, "{fps} fps: {x}");
+    }
+}
+
+/// Frame-time patterns (seconds), cycled: steady at each rate, alternating, bursty, irregular.
+fn patterns() -> Vec<Vec<f64>> {
+    let mut patterns: Vec<Vec<f64>> = RATES
+        .iter()
+        .map(|&fps| vec![1.0 / f64::from(fps)])
+        .collect();
+    patterns.push(vec![1.0 / 144.0, 1.0 / 30.0]);
+    patterns.push(vec![0.004, 0.004, 0.004, 0.05]);
+    patterns.push(vec![0.0151, 0.0173, 0.0162, 0.0149, 0.0188]);
+    patterns
+}
+
+#[test]
+fn a_constant_velocity_target_is_followed_at_the_analytic_lag_plus_look_ahead() {
+    const VELOCITY: Vec3 = Vec3::new(240.0, 0.0, 0.0);
+    const AHEAD: f32 = 0.4;
+    let spring = Spring::from_natural_frequency(4.0, 1.0).unwrap();
+    // The steady state: the goal runs `v·T` ahead of the target, the camera `c·v/k` behind it.
+    let expected = VELOCITY * AHEAD - VELOCITY * spring.damping() / spring.stiffness();
+    for pattern in patterns() {
+        let (mut app, player) = camera_app(60, (800, 600), |t| {
+            Vec3::new(-500.0, 40.0, 0.0) + VELOCITY * t
+        });
+        let camera = app
+            .world_mut()
+            .spawn((
+                camera_2d(CameraRig::new(spring)),
+                CameraTargets::single(player),
+                LookAhead::new(AHEAD),
+            ))
+            .id();
+        let mut elapsed = 0.0;
+        let mut worst: f32 = 0.0;
+        for frame in 0.. {
+            let dt = pattern[frame % pattern.len()];
+            app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+                dt,
+            )));
+            app.update();
+            elapsed += dt;
+            if elapsed > 6.0 {
+                break;
+            }
+            if elapsed > 4.0 {
+                let offset = translation(&app, camera) - translation(&app, player);
+                worst = worst.max(offset.distance(expected));
+            }
+        }
+        // Rounding at positions of a thousand pixels: a few thousandths of a pixel.
+        assert!(
+            worst < 5e-3,
+            "{pattern:?}: off the steady state {expected} by {worst}"
+        );
+    }
+}
+
+#[test]
+fn a_goal_of_the_apps_own_gets_the_exact_moving_target_step() {
+    fn between(time: Res<Time>, mut goals: Query<&mut CameraGoal>) {
+        for mut goal in &mut goals {
+            goal.point = Vec3::new(30.0, -12.0, 0.0) * time.elapsed_secs();
+        }
+    }
+    let spring = Spring::from_natural_frequency(3.0, 0.7).unwrap();
+    let lag = Vec3::new(30.0, -12.0, 0.0) * spring.damping() / spring.stiffness();
+    let mut results = Vec::new();
+    for fps in RATES {
+        let mut app = app(fps);
+        app.add_systems(SpringUpdate, between.in_set(CameraRigSystems::Goal));
+        let camera = app.world_mut().spawn(CameraRig::new(spring)).id();
+        for _ in 0..fps * 8 {
+            app.update();
+        }
+        let elapsed = app.world().resource::<Time>().elapsed_secs();
+        let offset = translation(&app, camera) - Vec3::new(30.0, -12.0, 0.0) * elapsed;
+        assert!(
+            offset.distance(-lag) < 1e-3,
+            "{fps} fps: {offset} vs {}",
+            -lag
+        );
+        results.push(offset);
+    }
+    for offset in &results {
+        assert!(offset.distance(results[0]) < 1e-3);
+    }
+}
+
+#[test]
+fn the_view_stays_inside_the_confiner_through_zooms_resizes_and_a_hitch() {
+    const BOUNDS: Rect = Rect {
+        min: Vec2::new(-1000.0, -400.0),
+        max: Vec2::new(3000.0, 900.0),
+    };
+    const SLOWING: f32 = 80.0;
+    for fps in RATES {
+        // The player runs right far past the level's edge, then back and up.
+        let (mut app, player) = camera_app(fps, (800, 600), |t| {
+            if t < 6.0 {
+                Vec3::new(-1200.0 + 900.0 * t, 0.0, 0.0)
+            } else {
+                Vec3::new(4200.0 - 700.0 * (t - 6.0), 300.0 * (t - 6.0), 0.0)
+            }
+        });
+        let camera = app
+            .world_mut()
+            .spawn((
+                camera_2d(CameraRig::new(Spring::snappy()).with_zoom_spring(Spring::bouncy())),
+                CameraTargets::single(player),
+                LookAhead::new(0.3),
+                Confiner::new(BOUNDS).with_slowing_distance(SLOWING),
+            ))
+            .id();
+        let mut size = Vec2::new(800.0, 600.0);
+        let dt = 1.0 / fps as f32;
+        let mut last: Option<(Vec3, Vec3)> = None;
+        let mut previous_velocity: Option<(f32, f32)> = None;
+        for frame in 0..fps * 10 {
+            let t = frame as f32 * dt;
+            // Zoom out and in (a bouncy zoom overshoots), resize the window, hitch for 1 s.
+            let changing = [(2.0, 1.8), (3.0, 0.6), (4.0, 1.0)]
+                .iter()
+                .any(|&(at, _)| (t - at).abs() < 1.0)
+                || (7.0..8.0).contains(&t);
+            if let Some(&(_, zoom)) = [(2.0, 1.8), (3.0, 0.6), (4.0, 1.0)]
+                .iter()
+                .find(|&&(at, _)| frame == (at * fps as f32) as u32)
+            {
+                app.world_mut().get_mut::<CameraRig>(camera).unwrap().zoom = zoom;
+            }
+            if frame == 7 * fps {
+                size = Vec2::new(1200.0, 700.0);
+                let mut windows = app.world_mut().query::<&mut Window>();
+                windows
+                    .single_mut(app.world_mut())
+                    .unwrap()
+                    .resolution
+                    .set(size.x, size.y);
+            }
+            let hitch = frame == 9 * fps;
+            if hitch {
+                app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs(1)));
+            }
+            app.update();
+            if hitch {
+                app.insert_resource(TimeUpdateStrategy::ManualDuration(crate::harness::frame(
+                    fps,
+                )));
+            }
+            let centre = translation(&app, camera).truncate();
+            let half = half_view(&app, camera, size);
+            let (min, max) = (centre - half, centre + half);
+            let slack = 1e-3 * BOUNDS.max.x;
+            assert!(
+                min.x >= BOUNDS.min.x - slack
+                    && min.y >= BOUNDS.min.y - slack
+                    && max.x <= BOUNDS.max.x + slack
+                    && max.y <= BOUNDS.max.y + slack,
+                "{fps} fps, frame {frame}: view {min}..{max} outside {BOUNDS:?}"
+            );
+            // Away from zoom, resize and hitch, the eased camera's velocity changes by no more
+            // than its spring's own (the unconfined centre's) plus the easing's curvature.
+            let free = app.world().get::<RigMotion>(camera).unwrap().centre();
+            let camera_now = translation(&app, camera);
+            if let Some((last_camera, last_free)) = last
+                && !changing
+                && !hitch
+                && frame != 9 * fps + 1
+            {
+                let velocity = (
+                    (camera_now.x - last_camera.x) / dt,
+                    (free.x - last_free.x) / dt,
+                );
+                if let Some((camera_before, free_before)) = previous_velocity {
+                    let jump = (velocity.0 - camera_before).abs();
+                    let spring_jump = (velocity.1 - free_before).abs();
+                    let curvature =
+                        velocity.1.abs().max(free_before.abs()).powi(2) * dt / (2.0 * SLOWING);
+                    assert!(
+                        jump <= spring_jump + curvature + 1.0,
+                        "{fps} fps, frame {frame}: velocity jumped by {jump} (spring {spring_jump}, easing {curvature})"
+                    );
+                }
+                previous_velocity = Some(velocity);
+            } else {
+                previous_velocity = None;
+            }
+            last = Some((camera_now, free));
+        }
+        // At the end the camera rests on the right edge... or follows the player inside.
+        let centre = translation(&app, camera);
+        assert!(centre.is_finite());
+    }
+}
+
+/// The largest amount by which the camera's velocity changed in a frame beyond what its
+/// unconfined spring's changed and (with a slowing distance) the easing's curvature
+/// `v²·dt/(2·slowing)` allows, for a bouncy camera running into the level's right edge.
+fn largest_extra_velocity_jump(slowing: f32) -> f32 {
+    let (mut app, player) = camera_app(60, (800, 600), |t| Vec3::new(-200.0 + 900.0 * t, 0.0, 0.0));
+    let camera = app
+        .world_mut()
+        .spawn((
+            camera_2d(CameraRig::new(Spring::bouncy())),
+            CameraTargets::single(player),
+            Confiner::new(Rect::new(-1000.0, -400.0, 3000.0, 900.0)).with_slowing_distance(slowing),
+        ))
+        .id();
+    let mut samples = Vec::new();
+    for _ in 0..300 {
+        app.update();
+        let free = app.world().get::<RigMotion>(camera).unwrap().centre().x;
+        samples.push((translation(&app, camera).x, free));
+    }
+    assert_eq!(samples.last().unwrap().0, 2600.0, "rests on the edge");
+    samples
+        .windows(3)
+        .map(|w| {
+            let camera = ((w[2].0 - w[1].0) - (w[1].0 - w[0].0)).abs() * 60.0;
+            let free = ((w[2].1 - w[1].1) - (w[1].1 - w[0].1)).abs() * 60.0;
+            let speed = ((w[2].1 - w[1].1).abs()).max((w[1].1 - w[0].1).abs()) * 60.0;
+            let curvature = if slowing > 0.0 {
+                speed * speed / 60.0 / (2.0 * slowing)
+            } else {
+                0.0
+            };
+            camera - free - curvature
+        })
+        .fold(0.0, f32::max)
+}
+
+#[test]
+fn a_bouncy_camera_slows_into_the_edge_where_a_clamp_would_stop_it_dead() {
+    // With no slowing distance the confiner is a clamp: the bouncy spring overshoots its goal
+    // on the edge and the clamp takes its velocity in one frame.
+    let clamped = largest_extra_velocity_jump(0.0);
+    assert!(clamped > 100.0, "a clamp stops at once: {clamped}");
+    // With one, the velocity changes by the spring's own change and the easing's curvature at
+    // most.
+    let slowed = largest_extra_velocity_jump(100.0);
+    assert!(slowed < 1.0, "slowed {slowed} vs clamped {clamped}");
+}
+
+#[test]
+fn group_framing_keeps_every_target_in_view_with_the_margin() {
+    for fps in RATES {
+        let mut app = app(fps);
+        app.world_mut().spawn((
+            Window {
+                resolution: WindowResolution::new(800, 600).with_scale_factor_override(1.0),
+                ..default()
+            },
+            PrimaryWindow,
+        ));
+        let targets = [
+            (Vec3::new(-300.0, 0.0, 0.0), 40.0, 1.0),
+            (Vec3::new(900.0, 350.0, 0.0), 60.0, 3.0),
+        ];
+        let entities: Vec<Entity> = targets
+            .iter()
+            .map(|&(position, ..)| {
+                app.world_mut()
+                    .spawn(Transform::from_translation(position))
+                    .id()
+            })
+            .collect();
+        let camera = app
+            .world_mut()
+            .spawn((
+                camera_2d(CameraRig::new(Spring::snappy())),
+                CameraTargets::new(entities.iter().zip(&targets).map(
+                    |(&entity, &(_, radius, weight))| {
+                        CameraTarget::new(entity)
+                            .with_radius(radius)
+                            .with_weight(weight)
+                    },
+                )),
+                GroupFraming::new(0.1),
+            ))
+            .id();
+        for _ in 0..fps * 4 {
+            app.update();
+        }
+        let centre = translation(&app, camera).truncate();
+        let half = half_view(&app, camera, Vec2::new(800.0, 600.0));
+        let inner = half * 0.8;
+        for &(position, radius, _) in &targets {
+            let local = (position.truncate() - centre).abs() + Vec2::splat(radius);
+            assert!(
+                local.x <= inner.x + 0.05 && local.y <= inner.y + 0.05,
+                "{fps} fps: {local} outside {inner}"
+            );
+        }
+        // And tight: on one axis a target touches the margin.
+        let touching = targets.iter().any(|&(position, radius, _)| {
+            let local = (position.truncate() - centre).abs() + Vec2::splat(radius);
+            (local.x - inner.x).abs() < 0.05 || (local.y - inner.y).abs() < 0.05
+        });
+        assert!(
+            touching,
+            "{fps} fps: the zoom does not fit the targets tightly"
+        );
+    }
+}
+
+#[test]
+fn orbiting_never_changes_the_distance() {
+    for fps in RATES {
+        let (mut app, player) = camera_app(fps, (800, 600), |t| Vec3::new(3.0 * t, 0.0, -t));
+        let camera = app
+            .world_mut()
+            .spawn((
+                Camera3d::default(),
+                Projection::Perspective(default()),
+                CameraRig::new(Spring::smooth()),
+                CameraTargets::single(player),
+                OrbitRig::new(10.0).with_spring(Spring::bouncy()),
+            ))
+            .id();
+        let mut worst: f32 = 0.0;
+        for frame in 0..fps * 4 {
+            // Yaw and pitch input every frame, flicked back and forth.
+            let delta = Vec2::new(
+                if (frame / fps) % 2 == 0 { 0.05 } else { -0.08 },
+                0.02 * ((frame as f32) * 0.1).sin(),
+            );
+            app.world_mut()
+                .get_mut::<OrbitRig>(camera)
+                .unwrap()
+                .rotate(delta);
+            app.update();
+            let motion = *app.world().get::<RigMotion>(camera).unwrap();
+            let transform = *app.world().get::<Transform>(camera).unwrap();
+            let distance = transform.translation.distance(motion.centre());
+            worst = worst.max((distance / 10.0 - 1.0).abs());
+            // It looks at the point it orbits.
+            let forward = transform.forward().as_vec3();
+            let to_centre = (motion.centre() - transform.translation).normalize();
+            assert!(forward.dot(to_centre) > 1.0 - 1e-5);
+        }
+        assert!(worst < 1e-5, "{fps} fps: distance off by {worst} relative");
+        let orbit = app.world().get::<OrbitRig>(camera).unwrap();
+        assert!(orbit.pitch <= 1.5, "pitch kept in its limits");
+    }
+}
+
+#[test]
+fn held_vertical_motion_waits_and_then_follows_without_a_jump() {
+    let (mut app, player) = camera_app(60, (800, 600), |t| {
+        Vec3::new(0.0, if t > 1.0 { 200.0 * (t - 1.0) } else { 0.0 }, 0.0)
+    });
+    let camera = app
+        .world_mut()
+        .spawn((
+            camera_2d(CameraRig::new(Spring::smooth()).with_vertical(Spring::slow())),
+            CameraTargets::single(player),
+        ))
+        .id();
+    app.world_mut()
+        .get_mut::<CameraRig>(camera)
+        .unwrap()
+        .hold_vertical = true;
+    for _ in 0..120 {
+        app.update();
+    }
+    assert_eq!(translation(&app, camera).y, 0.0, "held while airborne");
+    app.world_mut()
+        .get_mut::<CameraRig>(camera)
+        .unwrap()
+        .hold_vertical = false;
+    // From rest, the camera's acceleration is never more than its spring's pull toward the
+    // goal: no velocity is made up for the held time.
+    let spring: Spring = Spring::slow();
+    let dt = 1.0 / 60.0;
+    let (mut last, mut velocity) = (translation(&app, camera).y, 0.0_f32);
+    for _ in 0..300 {
+        let goal = translation(&app, player).y + 200.0 * dt;
+        let pull = (spring.stiffness() * (goal - last).abs()
+            + spring.damping() * (200.0 - velocity).abs())
+            / spring.mass();
+        app.update();
+        let y = translation(&app, camera).y;
+        let new_velocity = (y - last) / dt;
+        assert!(
+            ((new_velocity - velocity) / dt).abs() <= pull * 1.01 + 1.0,
+            "{y} after {last}"
+        );
+        (last, velocity) = (y, new_velocity);
+    }
+    // Then it follows at the steady lag.
+    let lag = translation(&app, player).y - translation(&app, camera).y;
+    assert!(
+        (lag - 200.0 * spring.damping() / spring.stiffness()).abs() < 0.01,
+        "lag {lag}"
+    );
+}
