@@ -515,3 +515,131 @@ fn held_vertical_motion_waits_and_then_follows_without_a_jump() {
         "lag {lag}"
     );
 }
+
+#[test]
+fn an_occluder_pulls_the_camera_in_and_it_springs_back_out_when_clear() {
+    use bevy::camera::primitives::Aabb;
+    use bevy::camera::visibility::InheritedVisibility;
+    use bevy_sprung::camera::CameraOcclusion;
+
+    for fps in RATES {
+        let (mut app, player) = camera_app(fps, (800, 600), |_| Vec3::ZERO);
+        app.add_plugins(AssetPlugin::default()).init_asset::<Mesh>();
+        let camera = app
+            .world_mut()
+            .spawn((
+                Camera3d::default(),
+                Projection::Perspective(default()),
+                CameraRig::new(Spring::smooth()),
+                CameraTargets::single(player),
+                OrbitRig::new(10.0).with_angles(0.0, 0.0),
+                CameraOcclusion::new(0.25),
+            ))
+            .id();
+        // The player's own mesh is where the ray starts: it never occludes.
+        let cube = app
+            .world_mut()
+            .resource_mut::<Assets<Mesh>>()
+            .add(Cuboid::new(2.0, 2.0, 0.5));
+        let blocker_at = |z: f32| Transform::from_xyz(0.0, 0.0, z);
+        app.world_mut().entity_mut(player).insert((
+            Mesh3d(cube.clone()),
+            Visibility::Visible,
+            InheritedVisibility::VISIBLE,
+            Aabb::from_min_max(Vec3::splat(-1.0), Vec3::splat(1.0)),
+        ));
+        let blocker = app
+            .world_mut()
+            .spawn((
+                Mesh3d(cube),
+                Visibility::Visible,
+                InheritedVisibility::VISIBLE,
+                Aabb::from_min_max(Vec3::new(-1.0, -1.0, -0.25), Vec3::new(1.0, 1.0, 0.25)),
+                blocker_at(40.0),
+            ))
+            .id();
+        for _ in 0..fps {
+            app.update();
+        }
+        assert!(
+            (translation(&app, camera).z - 10.0).abs() < 1e-4,
+            "clear: at its distance"
+        );
+
+        // A wall between them: the camera is in front of it (the wall's near face is at 4.75)
+        // the frame after it moved (its `GlobalTransform` is this frame's then).
+        *app.world_mut().get_mut::<Transform>(blocker).unwrap() = blocker_at(5.0);
+        app.update();
+        app.update();
+        let z = translation(&app, camera).z;
+        assert!((z - 4.5).abs() < 1e-3, "{fps} fps: pulled in to {z}");
+        for _ in 0..fps {
+            app.update();
+            assert!(
+                (translation(&app, camera).z - 4.5).abs() < 1e-3,
+                "stays in front"
+            );
+        }
+
+        // Gone: it springs back out, smoothly, to its distance.
+        *app.world_mut().get_mut::<Transform>(blocker).unwrap() = blocker_at(40.0);
+        let mut last = translation(&app, camera).z;
+        for _ in 0..2 {
+            app.update();
+        }
+        assert!(
+            translation(&app, camera).z < 10.0 - 1.0,
+            "{fps} fps: springs out, does not jump"
+        );
+        for _ in 0..fps * 3 {
+            app.update();
+            let z = translation(&app, camera).z;
+            assert!(z >= last - 1e-4, "moves out monotonically");
+            last = z;
+        }
+        assert!((translation(&app, camera).z - 10.0).abs() < 1e-3);
+    }
+}
+
+#[test]
+fn shake_stacks_on_a_rig_and_never_feeds_back() {
+    let (mut app, player) = camera_app(60, (800, 600), |t| Vec3::new(100.0 * t, 0.0, 0.0));
+    let camera = app
+        .world_mut()
+        .spawn((
+            camera_2d(CameraRig::new(Spring::smooth())),
+            CameraTargets::single(player),
+            Shake::new(3).with_max_translation(Vec3::new(30.0, 30.0, 0.0)),
+        ))
+        .id();
+    // The same rig without a shake, side by side.
+    let (mut calm, calm_player) = camera_app(60, (800, 600), |t| Vec3::new(100.0 * t, 0.0, 0.0));
+    let calm_camera = calm
+        .world_mut()
+        .spawn((
+            camera_2d(CameraRig::new(Spring::smooth())),
+            CameraTargets::single(calm_player),
+        ))
+        .id();
+    let mut shaken = false;
+    for frame in 0..180 {
+        if frame == 30 {
+            app.world_mut()
+                .get_mut::<Shake>(camera)
+                .unwrap()
+                .add_trauma(1.0);
+        }
+        app.update();
+        calm.update();
+        let difference = translation(&app, camera) - translation(&calm, calm_camera);
+        shaken |= difference.length() > 1.0;
+        assert!(
+            difference.abs().max_element() <= 30.0 + 1e-3,
+            "frame {frame}: {difference}"
+        );
+    }
+    assert!(shaken, "the shake showed");
+    // Once calm, the rig is where the unshaken one is: the shake never fed back.
+    let difference = translation(&app, camera) - translation(&calm, calm_camera);
+    assert!(difference.length() < 1e-3, "{difference}");
+}

@@ -592,6 +592,7 @@ pub struct RigMotion {
     look_ahead: Vec3,
     zoom: f32,
     orbit: Vec3,
+    clearance: f32,
 }
 
 impl Default for RigMotion {
@@ -602,6 +603,7 @@ impl Default for RigMotion {
             look_ahead: Vec3::ZERO,
             zoom: 1.0,
             orbit: Vec3::new(0.0, 0.0, 1.0),
+            clearance: 1.0,
         }
     }
 }
@@ -650,6 +652,23 @@ impl RigMotion {
     pub(crate) fn set_orbit(&mut self, orbit: Vec3) {
         self.orbit = orbit;
     }
+
+    /// How much of its arm the camera has clear of occluders, from 0 to 1 (1 without
+    /// occlusion).
+    #[must_use]
+    pub fn clearance(&self) -> f32 {
+        if self.clearance.is_finite() {
+            self.clearance.clamp(0.0, 1.0)
+        } else {
+            1.0
+        }
+    }
+
+    /// Pulls the camera in to `clearance` of its arm (an occluder between it and the point).
+    #[cfg(feature = "camera_occlusion")]
+    pub(crate) fn set_clearance(&mut self, clearance: f32) {
+        self.clearance = clearance;
+    }
 }
 
 spring_property!(
@@ -672,6 +691,17 @@ spring_property!(
     /// A rig's orbit: yaw, pitch and distance.
     pub RigOrbit: RigMotion::orbit as Linear<Vec3>
 );
+
+#[cfg(feature = "camera_occlusion")]
+spring_property!(
+    /// How much of its arm a rig's camera has clear of occluders (see
+    /// [`CameraOcclusion`](super::CameraOcclusion)).
+    pub RigClearance: RigMotion::clearance as Linear<f32>
+);
+
+/// The spring of a rig's clearance: how the camera moves back out once an occluder is gone.
+#[cfg(feature = "camera_occlusion")]
+pub type RigClearanceSpring = PropertySpring<RigClearance>;
 
 /// The spring of a rig's horizontal motion.
 pub type RigHorizontalSpring = PropertySpring<RigHorizontal>;

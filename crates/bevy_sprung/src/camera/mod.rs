@@ -8,6 +8,8 @@
 //! Cinemachine, smooth-bevy-cameras and `bevy_dolly` concept and the code that does it here.
 
 mod components;
+#[cfg(feature = "camera_occlusion")]
+mod occlusion;
 mod systems;
 mod view;
 
@@ -21,6 +23,10 @@ pub use components::{
     RigMotion, RigOrbit, RigOrbitSpring, RigVertical, RigVerticalSpring, RigZoom, RigZoomSpring,
     ScreenPosition, ZoneUnit,
 };
+#[cfg(feature = "camera_occlusion")]
+pub use components::{RigClearance, RigClearanceSpring};
+#[cfg(feature = "camera_occlusion")]
+pub use occlusion::CameraOcclusion;
 
 use crate::property_plugin::SpringPropertyPlugin;
 use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_systems};
@@ -56,6 +62,12 @@ impl Plugin for CameraRigPlugin {
             SpringPropertyPlugin::<RigLookAhead>::default(),
             SpringPropertyPlugin::<RigZoom>::default(),
             SpringPropertyPlugin::<RigOrbit>::default(),
+        ));
+        // The clearance steps before the camera is placed, from the last frame's pull.
+        #[cfg(feature = "camera_occlusion")]
+        app.add_plugins(SpringPropertyPlugin::<RigClearance>::default())
+            .register_type::<CameraOcclusion>();
+        app.add_plugins((
             SpringPropertyPlugin::<RigHorizontal>::default(),
             SpringPropertyPlugin::<RigVertical>::default(),
         ))
@@ -97,10 +109,20 @@ impl Plugin for CameraRigPlugin {
                         systems::sample_targets.in_set(CameraRigSystems::Targets),
                         systems::track_goals.in_set(CameraRigSystems::Track),
                         systems::frame_goals.in_set(CameraRigSystems::Frame),
-                        systems::compose_cameras.in_set(CameraRigSystems::Compose),
+                        (systems::compose_cameras, systems::zoom_projections)
+                            .chain()
+                            .in_set(CameraRigSystems::Compose),
                     )
                         .run_if(any_with_component::<CameraRig>),
                 );
+            #[cfg(feature = "camera_occlusion")]
+            schedule.add_systems(
+                occlusion::occlude
+                    .in_set(CameraRigSystems::Compose)
+                    .before(systems::compose_cameras)
+                    .run_if(any_with_component::<CameraOcclusion>)
+                    .run_if(occlusion::meshes_exist),
+            );
         });
     }
 }

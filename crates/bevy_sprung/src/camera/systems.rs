@@ -305,78 +305,102 @@ fn set_target_velocity_if_neq<P>(
     }
 }
 
-/// The parts of a rig read to place its camera.
-#[derive(QueryData)]
-#[query_data(mutable)]
-pub(super) struct Composed {
-    rig: &'static CameraRig,
-    motion: &'static RigMotion,
-    transform: &'static mut Transform,
-    projection: Option<&'static mut Projection>,
-    camera: Option<&'static Camera>,
-    confiner: Option<&'static Confiner>,
-    orbit: Option<&'static OrbitRig>,
+/// Where a rig puts its camera this frame, before an occluder pulls it in: the point it
+/// frames (eased into its confiner), the arm from that point to the camera, and the rotation
+/// it turns the camera to (when it aims).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct RigPose {
+    pub(super) focus: Vec3,
+    pub(super) arm: Vec3,
+    pub(super) rotation: Option<Quat>,
 }
 
-/// After the springs stepped: the camera's translation, rotation and projection scale, written
-/// only where they change.
+/// What a rig's pose is computed from.
+#[derive(QueryData)]
+pub(super) struct Posed {
+    rig: &'static CameraRig,
+    confiner: Option<&'static Confiner>,
+    orbit: Option<&'static OrbitRig>,
+    view: View,
+}
+
+impl PosedItem<'_, '_> {
+    /// The pose of a rig whose springs hold `motion`.
+    pub(super) fn pose(&self, motion: &RigMotion, window: Option<&Window>) -> RigPose {
+        let zoom = motion.zoom();
+        let distance = base_distance(self.rig, self.orbit, motion);
+        let half_view = view_half_extents(&self.view, window, zoom, distance);
+        let mut focus = motion.centre();
+        if let Some(confiner) = self.confiner {
+            let range = centre_range(confiner.bounds, half_view);
+            let slowing = confiner.slowing_distance;
+            focus.x = ease_into(focus.x, range.min.x, range.max.x, slowing);
+            focus.y = ease_into(focus.y, range.min.y, range.max.y, slowing);
+        }
+        let distance_factor = if is_perspective(self.view.projection) {
+            zoom
+        } else {
+            1.0
+        };
+        if self.orbit.is_some() {
+            let orbit = motion.orbit();
+            let rotation = orbit_rotation(orbit.x, orbit.y);
+            let arm = rotation * Vec3::new(0.0, 0.0, orbit.z.max(1e-4) * distance_factor);
+            RigPose {
+                focus,
+                arm,
+                rotation: Some(rotation),
+            }
+        } else {
+            let arm = self.rig.offset * distance_factor;
+            let aim = self.rig.look_at_goal && arm.length_squared() > 0.0;
+            let rotation = aim.then(|| {
+                Transform::from_translation(focus + arm)
+                    .looking_at(focus, Vec3::Y)
+                    .rotation
+            });
+            RigPose {
+                focus,
+                arm,
+                rotation,
+            }
+        }
+    }
+}
+
+/// After the springs stepped: the camera's translation and rotation, written only where they
+/// change. An occluder's pull (the clearance) shortens the arm.
 pub(super) fn compose_cameras(
-    mut rigs: Query<Composed>,
+    mut rigs: Query<(Posed, &RigMotion, &mut Transform)>,
     window: Query<&Window, With<PrimaryWindow>>,
 ) {
     let window = window.single().ok();
-    for mut rig in &mut rigs {
-        let zoom = rig.motion.zoom();
-        let perspective = is_perspective(rig.projection.as_deref());
-        let distance = base_distance(rig.rig, rig.orbit, rig.motion);
-        let half_view = half_extents(
-            rig.projection.as_deref(),
-            viewport_size(rig.camera, window),
-            zoom,
-            distance * zoom,
-        );
-        let mut centre = rig.motion.centre();
-        if let Some(confiner) = rig.confiner {
-            let range = centre_range(confiner.bounds, half_view);
-            let slowing = confiner.slowing_distance;
-            centre.x = ease_into(centre.x, range.min.x, range.max.x, slowing);
-            centre.y = ease_into(centre.y, range.min.y, range.max.y, slowing);
-        }
-        let distance_factor = if perspective { zoom } else { 1.0 };
-        let (translation, rotation) = if rig.orbit.is_some() {
-            let orbit = rig.motion.orbit();
-            let rotation = orbit_rotation(orbit.x, orbit.y);
-            let distance = orbit.z.max(1e-4) * distance_factor;
-            let translation = centre + rotation * Vec3::new(0.0, 0.0, distance);
-            (translation, Some(rotation))
-        } else {
-            let translation = centre + rig.rig.offset * distance_factor;
-            let aim = rig.rig.look_at_goal && translation.distance_squared(centre) > 0.0;
-            let rotation = aim.then(|| {
-                Transform::from_translation(translation)
-                    .looking_at(centre, Vec3::Y)
-                    .rotation
-            });
-            (translation, rotation)
-        };
+    for (posed, motion, mut transform) in &mut rigs {
+        let pose = posed.pose(motion, window);
+        let translation = pose.focus + pose.arm * motion.clearance();
         if !translation.is_finite() {
             continue;
         }
-        if rig.transform.translation != translation {
-            rig.transform.translation = translation;
+        if transform.translation != translation {
+            transform.translation = translation;
         }
-        if let Some(rotation) = rotation.filter(|rotation| rotation.is_finite())
-            && rig.transform.rotation != rotation
+        if let Some(rotation) = pose.rotation.filter(|rotation| rotation.is_finite())
+            && transform.rotation != rotation
         {
-            rig.transform.rotation = rotation;
+            transform.rotation = rotation;
         }
-        if let Some(mut projection) = rig.projection
-            && let Projection::Orthographic(orthographic) = projection.bypass_change_detection()
+    }
+}
+
+/// After the springs stepped: an orthographic rig camera's scale is its zoom, written only
+/// when it changes.
+pub(super) fn zoom_projections(mut rigs: Query<(&RigMotion, &mut Projection), With<CameraRig>>) {
+    for (motion, mut projection) in &mut rigs {
+        let zoom = motion.zoom();
+        if let Projection::Orthographic(orthographic) = projection.bypass_change_detection()
             && orthographic.scale.to_bits() != zoom.to_bits()
+            && let Projection::Orthographic(orthographic) = projection.as_mut()
         {
-            let Projection::Orthographic(orthographic) = projection.as_mut() else {
-                continue;
-            };
             orthographic.scale = zoom;
         }
     }
