@@ -643,3 +643,174 @@ fn shake_stacks_on_a_rig_and_never_feeds_back() {
     let difference = translation(&app, camera) - translation(&calm, calm_camera);
     assert!(difference.length() < 1e-3, "{difference}");
 }
+
+#[test]
+fn a_change_of_shot_blends_with_position_and_velocity_continuous() {
+    use bevy_sprung::camera::{BlendTrack, CameraBlend, VirtualCamera};
+
+    let blend_spring: Spring = Spring::smooth();
+    for fps in RATES {
+        let (mut app, player) = camera_app(fps, (800, 600), |t| Vec3::new(300.0 * t, 50.0, 0.0));
+        let follow = app
+            .world_mut()
+            .spawn((
+                Projection::Orthographic(OrthographicProjection::default_2d()),
+                CameraRig::new(Spring::snappy()),
+                CameraTargets::single(player),
+                VirtualCamera::new(1),
+            ))
+            .id();
+        let overview = app
+            .world_mut()
+            .spawn((
+                Transform::from_xyz(1000.0, 500.0, 0.0),
+                Projection::Orthographic(OrthographicProjection {
+                    scale: 2.0,
+                    ..OrthographicProjection::default_2d()
+                }),
+                VirtualCamera::new(0),
+            ))
+            .id();
+        let camera = app
+            .world_mut()
+            .spawn((
+                Camera2d,
+                Projection::Orthographic(OrthographicProjection::default_2d()),
+                CameraBlend::new(blend_spring),
+            ))
+            .id();
+        let dt = 1.0 / fps as f32;
+        for _ in 0..fps {
+            app.update();
+            assert_eq!(
+                translation(&app, camera),
+                translation(&app, follow),
+                "{fps} fps: on the first shot"
+            );
+        }
+        assert_eq!(
+            app.world().get::<BlendTrack>(camera).unwrap().shot(),
+            Some(follow)
+        );
+
+        // The overview takes over.
+        app.world_mut()
+            .get_mut::<VirtualCamera>(overview)
+            .unwrap()
+            .priority = 5;
+        let before = translation(&app, camera);
+        // The first shot moves with the player, steady after a second; the overview stands.
+        let velocity = Vec3::new(300.0, 0.0, 0.0);
+        app.update();
+        let after = translation(&app, camera);
+        // Exactly one step of the blend spring, from the camera's offset from the overview and
+        // its velocity relative to it, toward no offset.
+        let stepped = blend_spring
+            .transition(dt)
+            .step(
+                sprung::SpringState::new(before - Vec3::new(1000.0, 500.0, 0.0), velocity),
+                Vec3::ZERO,
+            )
+            .position;
+        let expected = Vec3::new(1000.0, 500.0, 0.0) + stepped;
+        assert!(
+            after.distance(expected) < 1e-2,
+            "{fps} fps: {after} vs {expected}"
+        );
+        // Which is no cut: a small part of the way.
+        let way = before.distance(Vec3::new(1000.0, 500.0, 0.0));
+        assert!(after.distance(before) < 0.2 * way, "{fps} fps: a cut");
+
+        let mut last = after;
+        let mut last_velocity = (after - before) / dt;
+        for _ in 0..fps * 5 {
+            app.update();
+            let now = translation(&app, camera);
+            let velocity = (now - last) / dt;
+            let remaining = now - Vec3::new(1000.0, 500.0, 0.0);
+            let pull = (blend_spring.stiffness() * remaining.length()
+                + blend_spring.damping() * last_velocity.length())
+                / blend_spring.mass();
+            assert!(
+                (velocity - last_velocity).length() <= pull * dt * 1.5 + 1.0,
+                "{fps} fps: a jump in velocity"
+            );
+            (last, last_velocity) = (now, velocity);
+        }
+        // Settled: exactly on the new shot, lens and all.
+        assert_eq!(translation(&app, camera), Vec3::new(1000.0, 500.0, 0.0));
+        let Some(Projection::Orthographic(lens)) = app.world().get::<Projection>(camera) else {
+            panic!()
+        };
+        assert_eq!(lens.scale, 2.0);
+        assert_eq!(
+            app.world().get::<BlendTrack>(camera).unwrap().shot(),
+            Some(overview)
+        );
+    }
+}
+
+#[test]
+fn the_world_changing_under_a_rig_never_panics_nor_writes_nan() {
+    use bevy_sprung::camera::{BlendTrack, CameraBlend, VirtualCamera};
+
+    let (mut app, player) = camera_app(60, (800, 600), |t| Vec3::new(200.0 * t, 0.0, 0.0));
+    let friend = app
+        .world_mut()
+        .spawn(Transform::from_xyz(-300.0, 0.0, 0.0))
+        .id();
+    let shot = app
+        .world_mut()
+        .spawn((
+            Projection::Orthographic(OrthographicProjection::default_2d()),
+            CameraRig::new(Spring::smooth()),
+            CameraTargets::new([player, friend]),
+            GroupFraming::new(0.1),
+            LookAhead::new(0.3),
+            DeadZone::view(Vec2::splat(0.1)),
+            VirtualCamera::new(1),
+        ))
+        .id();
+    let wide = app
+        .world_mut()
+        .spawn((Transform::from_xyz(0.0, 0.0, 0.0), VirtualCamera::new(0)))
+        .id();
+    let camera = app
+        .world_mut()
+        .spawn((Camera2d, CameraBlend::new(Spring::smooth())))
+        .id();
+    let finite = |app: &App| {
+        [shot, camera]
+            .iter()
+            .filter_map(|&entity| app.world().get::<Transform>(entity))
+            .all(|transform| transform.translation.is_finite() && transform.rotation.is_finite())
+    };
+    for frame in 0..400 {
+        match frame {
+            // A target despawned: the goal is the other one.
+            50 => app.world_mut().entity_mut(friend).despawn(),
+            // A goal of NaN written by hand: refused, the last one kept.
+            100 => app.world_mut().get_mut::<CameraGoal>(shot).unwrap().point = Vec3::NAN,
+            // Every target gone: the rig rests on its last goal.
+            150 => app.world_mut().entity_mut(player).despawn(),
+            // The shot showing despawned mid-motion: the camera blends to the other one.
+            250 => app.world_mut().entity_mut(shot).despawn(),
+            _ => {}
+        }
+        app.update();
+        assert!(finite(&app), "frame {frame}");
+    }
+    assert_eq!(
+        app.world().get::<BlendTrack>(camera).unwrap().shot(),
+        Some(wide)
+    );
+    assert_eq!(
+        translation(&app, camera),
+        Vec3::ZERO,
+        "settled on the remaining shot"
+    );
+    // The last shot gone too: the camera stays where it is.
+    app.world_mut().entity_mut(wide).despawn();
+    app.update();
+    assert_eq!(translation(&app, camera), Vec3::ZERO);
+}

@@ -7,6 +7,7 @@
 //! [`CameraRigSystems::Goal`]. See the [camera guide](crate::guides::camera) for each
 //! Cinemachine, smooth-bevy-cameras and `bevy_dolly` concept and the code that does it here.
 
+mod blend;
 mod components;
 #[cfg(feature = "camera_occlusion")]
 mod occlusion;
@@ -17,6 +18,10 @@ use core::any::TypeId;
 
 use bevy::prelude::*;
 
+pub use blend::{
+    BlendLens, BlendLensSpring, BlendOffset, BlendRotation, BlendRotationSpring, BlendTrack,
+    BlendTranslation, BlendTranslationSpring, CameraBlend, VirtualCamera,
+};
 pub use components::{
     CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, DeadZone, GroupFraming,
     LookAhead, OrbitRig, RigHorizontal, RigHorizontalSpring, RigLookAhead, RigLookAheadSpring,
@@ -81,6 +86,32 @@ impl Plugin for CameraRigPlugin {
         .register_type::<GroupFraming>()
         .register_type::<OrbitRig>()
         .register_type::<RigMotion>();
+        // Blends come after the shots (rigs) are placed.
+        app.add_plugins((
+            SpringPropertyPlugin::<BlendTranslation>::default(),
+            SpringPropertyPlugin::<BlendRotation>::default(),
+            SpringPropertyPlugin::<BlendLens>::default(),
+        ))
+        .init_resource::<blend::ShotMotion>()
+        .register_type::<VirtualCamera>()
+        .register_type::<CameraBlend>()
+        .register_type::<BlendTrack>()
+        .register_type::<BlendOffset>();
+        let blends = [TypeId::of::<PropertySpring<BlendTranslation>>()];
+        add_property_systems(app, &blends, |schedule| {
+            schedule.add_systems(
+                (
+                    (blend::track_shots, blend::switch_shots)
+                        .chain()
+                        .in_set(PropertySystems::<BlendTranslation>::phase(
+                            SpringPhase::Input,
+                        )),
+                    blend::compose_blends
+                        .in_set(PropertySystems::<BlendLens>::phase(SpringPhase::Observe)),
+                )
+                    .run_if(any_with_component::<CameraBlend>),
+            );
+        });
         let springs = [TypeId::of::<PropertySpring<RigHorizontal>>()];
         add_property_systems(app, &springs, |schedule| {
             // The rig's properties run in the order the plugin added them: look-ahead, zoom,
