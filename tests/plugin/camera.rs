@@ -239,14 +239,10 @@ fn the_view_stays_inside_the_confiner_through_zooms_resizes_and_a_hitch() {
         for frame in 0..fps * 10 {
             let t = frame as f32 * dt;
             // Zoom out and in (a bouncy zoom overshoots), resize the window, hitch for 1 s.
-            let changing = [(2.0, 1.8), (3.0, 0.6), (4.0, 1.0)]
-                .iter()
-                .any(|&(at, _)| (t - at).abs() < 1.0)
-                || (7.0..8.0).contains(&t);
-            if let Some(&(_, zoom)) = [(2.0, 1.8), (3.0, 0.6), (4.0, 1.0)]
-                .iter()
-                .find(|&&(at, _)| frame == (at * fps as f32) as u32)
-            {
+            const ZOOMS: [(u32, f32); 3] = [(2, 1.8), (3, 0.6), (4, 1.0)];
+            let changing =
+                ZOOMS.iter().any(|&(at, _)| (t - at as f32).abs() < 1.0) || (7.0..8.0).contains(&t);
+            if let Some(&(_, zoom)) = ZOOMS.iter().find(|&&(at, _)| frame == at * fps) {
                 app.world_mut().get_mut::<CameraRig>(camera).unwrap().zoom = zoom;
             }
             if frame == 7 * fps {

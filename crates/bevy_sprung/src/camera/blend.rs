@@ -165,7 +165,7 @@ fn lens(projection: &Projection) -> Option<f32> {
     match projection {
         Projection::Orthographic(orthographic) => Some(orthographic.scale),
         Projection::Perspective(perspective) => Some(perspective.fov),
-        _ => None,
+        Projection::Custom(_) => None,
     }
 }
 
@@ -174,7 +174,7 @@ fn set_lens(projection: &mut Projection, value: f32) {
     match projection {
         Projection::Orthographic(orthographic) => orthographic.scale = value,
         Projection::Perspective(perspective) => perspective.fov = value,
-        _ => {}
+        Projection::Custom(_) => {}
     }
 }
 
