@@ -15,6 +15,9 @@ use crate::harness::app;
 
 const RATES: [u32; 4] = [30, 60, 144, 240];
 
+/// The confiner test's zoom changes: (second, zoom).
+const ZOOMS: [(u32, f32); 3] = [(2, 1.8), (3, 0.6), (4, 1.0)];
+
 #[derive(Component)]
 struct Player;
 
@@ -239,7 +242,6 @@ fn the_view_stays_inside_the_confiner_through_zooms_resizes_and_a_hitch() {
         for frame in 0..fps * 10 {
             let t = frame as f32 * dt;
             // Zoom out and in (a bouncy zoom overshoots), resize the window, hitch for 1 s.
-            const ZOOMS: [(u32, f32); 3] = [(2, 1.8), (3, 0.6), (4, 1.0)];
             let changing =
                 ZOOMS.iter().any(|&(at, _)| (t - at as f32).abs() < 1.0) || (7.0..8.0).contains(&t);
             if let Some(&(_, zoom)) = ZOOMS.iter().find(|&&(at, _)| frame == at * fps) {
