@@ -100,7 +100,8 @@ pub(super) struct Tracked {
     tracking: &'static mut RigTracking,
     zoom: &'static mut RigZoomSpring,
     framing: Option<&'static GroupFraming>,
-    look_ahead: Option<(&'static LookAhead, &'static mut RigLookAheadSpring)>,
+    look_ahead: Option<&'static LookAhead>,
+    look_ahead_spring: Option<&'static mut RigLookAheadSpring>,
     orbit: Option<(&'static OrbitRig, &'static mut RigOrbitSpring)>,
     view: View,
 }
@@ -140,14 +141,19 @@ pub(super) fn track_goals(
             rig.orbit.as_ref().map(|(orbit, _)| *orbit),
             &rig.motion,
         );
-        if let Some((look_ahead, spring)) = rig.look_ahead.as_mut() {
-            if spring.spring() != &look_ahead.spring {
-                spring.set_spring(look_ahead.spring);
-            }
-            let mut ahead = rig.tracking.point_velocity * look_ahead.time;
-            if !look_ahead.vertical {
-                ahead.y = 0.0;
-            }
+        // Without a look-ahead (or once it is removed) the offset springs back to nothing.
+        if let Some(spring) = rig.look_ahead_spring.as_mut() {
+            let ahead = rig.look_ahead.map_or(Vec3::ZERO, |look_ahead| {
+                if spring.spring() != &look_ahead.spring {
+                    spring.set_spring(look_ahead.spring);
+                }
+                let ahead = rig.tracking.point_velocity * look_ahead.time;
+                if look_ahead.vertical {
+                    ahead
+                } else {
+                    ahead.with_y(0.0)
+                }
+            });
             spring.set_target_if_neq(ahead);
         }
 
