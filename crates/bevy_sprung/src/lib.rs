@@ -129,10 +129,12 @@ pub use sprung;
 pub mod prelude {
     #[cfg(feature = "asset")]
     pub use crate::asset::{UsePropertyPreset, UseSequencePreset, UseSpringPreset};
+    #[cfg(feature = "camera_occlusion")]
+    pub use crate::camera::CameraOcclusion;
     #[cfg(feature = "camera")]
     pub use crate::camera::{
-        CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, DeadZone, GroupFraming,
-        LookAhead, OrbitRig, ScreenPosition,
+        CameraBlend, CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, DeadZone,
+        GroupFraming, LookAhead, OrbitRig, ScreenPosition, VirtualCamera,
     };
     pub use crate::choreography::{
         Advance, AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted,

@@ -1,0 +1,221 @@
+//! A third-person orbit camera: a [`CameraRig`] with an [`OrbitRig`] around a player walking
+//! among pillars. Yaw, pitch and distance spring in polar coordinates (orbiting never changes
+//! the distance); [`CameraOcclusion`] pulls the camera in front of a pillar that comes between
+//! it and the player, and lets it spring back out once the way is clear. Tab switches to an
+//! overview shot: the two rigs are [`VirtualCamera`]s and the rendering camera's
+//! [`CameraBlend`] springs from one to the other with its velocity kept.
+//!
+//! Drag with the left mouse button to orbit, scroll to zoom, Tab for the overview. Without
+//! input the camera turns slowly round the player on its own and the overview comes and goes.
+//!
+//! ```text
+//! cargo run --example orbit
+//! ```
+
+use bevy::core_pipeline::tonemapping::Tonemapping;
+use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll};
+use bevy::prelude::*;
+use bevy_sprung::camera::{BlendTrack, RigMotion};
+use bevy_sprung::prelude::*;
+
+#[derive(Component)]
+struct Player;
+
+/// The two shots.
+#[derive(Component)]
+struct OrbitShot;
+#[derive(Component)]
+struct Overview;
+
+#[derive(Component)]
+struct Hud;
+
+/// Whether the mouse or keyboard has been used: until then the script plays.
+#[derive(Resource, Default)]
+struct Manual(bool);
+
+fn main() {
+    App::new()
+        .add_plugins((
+            DefaultPlugins.set(WindowPlugin {
+                primary_window: Some(Window {
+                    title: "sprung: orbit camera".into(),
+                    resolution: (1280, 720).into(),
+                    ..default()
+                }),
+                ..default()
+            }),
+            SpringPlugin::default(),
+        ))
+        .insert_resource(ClearColor(Color::srgb(0.55, 0.7, 0.85)))
+        .insert_resource(GlobalAmbientLight {
+            brightness: 600.0,
+            ..default()
+        })
+        .init_resource::<Manual>()
+        .add_systems(Startup, setup)
+        .add_systems(Update, (walk, orbit_input, switch_shot, hud))
+        .run();
+}
+
+fn setup(
+    mut commands: Commands,
+    mut meshes: ResMut<Assets<Mesh>>,
+    mut materials: ResMut<Assets<StandardMaterial>>,
+) {
+    commands.spawn((
+        Mesh3d(meshes.add(Plane3d::default().mesh().size(60.0, 60.0))),
+        MeshMaterial3d(materials.add(Color::srgb(0.62, 0.68, 0.58))),
+    ));
+    // A ring of pillars the player walks among.
+    let pillar = meshes.add(Cuboid::new(1.0, 5.0, 1.0));
+    let stone = materials.add(Color::srgb(0.5, 0.45, 0.6));
+    for k in 0..10 {
+        let angle = k as f32 * std::f32::consts::TAU / 10.0;
+        commands.spawn((
+            Mesh3d(pillar.clone()),
+            MeshMaterial3d(stone.clone()),
+            Transform::from_xyz(7.0 * angle.cos(), 2.5, 7.0 * angle.sin()),
+        ));
+    }
+    let player = commands
+        .spawn((
+            Player,
+            Mesh3d(meshes.add(Capsule3d::new(0.45, 1.0))),
+            MeshMaterial3d(materials.add(Color::srgb(0.95, 0.45, 0.2))),
+            Transform::from_xyz(4.0, 0.95, 0.0),
+        ))
+        .id();
+    commands.spawn((
+        DirectionalLight {
+            illuminance: 6000.0,
+            shadow_maps_enabled: false,
+            ..default()
+        },
+        Transform::from_xyz(4.0, 10.0, 6.0).looking_at(Vec3::ZERO, Vec3::Y),
+    ));
+    // The shots: an orbit behind the player, pulled in by pillars, and a high overview.
+    commands.spawn((
+        OrbitShot,
+        VirtualCamera::new(1),
+        Projection::Perspective(default()),
+        CameraRig::new(Spring::smooth()),
+        CameraTargets::single(player),
+        OrbitRig::new(11.0)
+            .with_angles(0.0, 0.35)
+            .with_limits(Vec2::new(-0.2, 1.3), Vec2::new(4.0, 20.0)),
+        CameraOcclusion::new(0.4),
+    ));
+    commands.spawn((
+        Overview,
+        VirtualCamera::new(0),
+        Projection::Perspective(default()),
+        CameraRig::new(Spring::gentle())
+            .with_offset(Vec3::new(0.0, 26.0, 12.0))
+            .looking_at_goal(),
+        CameraTargets::single(player),
+    ));
+    commands.spawn((
+        Camera3d::default(),
+        // No tonemapping LUTs are built into this example's Bevy features.
+        Tonemapping::None,
+        CameraBlend::new(Spring::smooth()),
+    ));
+    commands.spawn((
+        Hud,
+        Text::new(""),
+        TextFont::from_font_size(18.0),
+        TextColor(Color::srgb(0.05, 0.07, 0.12)),
+        BackgroundColor(Color::srgba(1.0, 1.0, 1.0, 0.75)),
+        Node {
+            position_type: PositionType::Absolute,
+            top: Val::Px(12.0),
+            left: Val::Px(14.0),
+            padding: UiRect::all(Val::Px(6.0)),
+            ..default()
+        },
+    ));
+}
+
+/// The player walks a slow figure eight through the ring of pillars.
+fn walk(time: Res<Time>, mut player: Single<&mut Transform, With<Player>>) {
+    let t = time.elapsed_secs() * 0.35;
+    player.translation = Vec3::new(5.0 * t.cos(), 0.95, 3.0 * (2.0 * t).sin());
+}
+
+/// Mouse drag orbits, the wheel zooms; without input the camera turns slowly on its own.
+fn orbit_input(
+    time: Res<Time>,
+    buttons: Res<ButtonInput<MouseButton>>,
+    motion: Res<AccumulatedMouseMotion>,
+    scroll: Res<AccumulatedMouseScroll>,
+    mut manual: ResMut<Manual>,
+    mut orbit: Single<&mut OrbitRig, With<OrbitShot>>,
+) {
+    manual.0 |= buttons.get_just_pressed().next().is_some() || scroll.delta != Vec2::ZERO;
+    if !manual.0 {
+        orbit.rotate(Vec2::new(0.5 * time.delta_secs(), 0.0));
+        return;
+    }
+    if buttons.pressed(MouseButton::Left) && motion.delta != Vec2::ZERO {
+        orbit.rotate(-motion.delta * 0.005);
+    }
+    if scroll.delta.y != 0.0 {
+        orbit.zoom_by((-scroll.delta.y * 0.1).exp());
+    }
+}
+
+/// Tab (or the script: from 3.5 s to 5.5 s) raises the overview above the orbit.
+fn switch_shot(
+    time: Res<Time>,
+    keys: Res<ButtonInput<KeyCode>>,
+    mut manual: ResMut<Manual>,
+    mut overview: Single<&mut VirtualCamera, With<Overview>>,
+) {
+    manual.0 |= keys.get_just_pressed().next().is_some();
+    let wanted = if manual.0 {
+        if keys.just_pressed(KeyCode::Tab) {
+            2 - overview.priority
+        } else {
+            overview.priority
+        }
+    } else {
+        let t = time.elapsed_secs();
+        if (3.5..5.5).contains(&t) { 2 } else { 0 }
+    };
+    if overview.priority != wanted {
+        overview.priority = wanted;
+    }
+}
+
+fn hud(
+    mut text: Single<&mut Text, With<Hud>>,
+    orbit: Single<(Entity, &RigMotion), With<OrbitShot>>,
+    blend: Single<&BlendTrack>,
+    manual: Res<Manual>,
+) {
+    let (orbit_shot, motion) = *orbit;
+    let shot = if blend.shot() == Some(orbit_shot) {
+        "orbit"
+    } else {
+        "overview"
+    };
+    let clearance = motion.clearance();
+    text.0 = format!(
+        "{}\nshot: {shot} (Tab)\nyaw {:.2} rad  pitch {:.2} rad  distance {:.1}\nclearance {:.1} %{}",
+        if manual.0 {
+            "drag to orbit, scroll to zoom"
+        } else {
+            "scripted tour (drag or press a key)"
+        },
+        motion.orbit().x,
+        motion.orbit().y,
+        motion.orbit().z,
+        clearance * 100.0,
+        if clearance < 0.99 {
+            ": pulled in front of a pillar"
+        } else {
+            ""
+        },
+    );
+}
