@@ -78,7 +78,10 @@ fn main() {
         .insert_resource(ClearColor(Color::srgb(0.08, 0.08, 0.12)))
         .init_resource::<Manual>()
         .add_systems(Startup, setup)
-        .add_systems(Update, (run, wander, toggle_group, hud))
+        .add_systems(
+            Update,
+            (run, wander, toggle_group.run_if(group_toggled), hud),
+        )
         .run();
 }
 
@@ -236,22 +239,25 @@ fn wander(time: Res<Time>, mut friend: Single<&mut Transform, With<Friend>>) {
     friend.translation.x = -600.0 + 300.0 * (time.elapsed_secs() * 0.6).sin();
 }
 
-/// G (or the script, after 6 s): frame both players as a group, zooming to fit them.
-fn toggle_group(
-    mut commands: Commands,
+/// Whether to switch group framing this frame: G, or the script after 6 s.
+fn group_toggled(
     time: Res<Time>,
     keys: Res<ButtonInput<KeyCode>>,
     manual: Res<Manual>,
+    grouped: Single<Has<GroupFraming>, With<CameraRig>>,
+) -> bool {
+    keys.just_pressed(KeyCode::KeyG) || (!manual.0 && !*grouped && time.elapsed_secs() > 6.0)
+}
+
+/// Frames both players as a group, zooming to fit them, or the player alone again.
+fn toggle_group(
+    mut commands: Commands,
     camera: Single<(Entity, Has<GroupFraming>), With<CameraRig>>,
     player: Single<Entity, With<Player>>,
     friend: Single<Entity, With<Friend>>,
     mut outline: Single<&mut Visibility, With<DeadZoneOutline>>,
 ) {
     let (camera, grouped) = *camera;
-    let scripted = !manual.0 && !grouped && time.elapsed_secs() > 6.0;
-    if !(keys.just_pressed(KeyCode::KeyG) || scripted) {
-        return;
-    }
     **outline = if grouped {
         Visibility::Inherited
     } else {

@@ -726,4 +726,6 @@ pub(crate) struct RigTracking {
     pub(crate) held: Option<Vec3>,
     /// The centre the rig aimed for last frame (before a held vertical), for its velocity.
     pub(crate) last_centre: Option<Vec3>,
+    /// The zoom the rig aimed for last frame, for its rate.
+    pub(crate) last_zoom: Option<f32>,
 }

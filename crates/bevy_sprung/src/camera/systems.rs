@@ -179,7 +179,16 @@ pub(super) fn track_goals(
         let zoom = fitted.unwrap_or(rig.rig.zoom);
         if zoom.is_finite() {
             let zoom = zoom.max(1e-4);
+            // A zoom that follows moving targets moves with them: its rate, like the centre's,
+            // makes the step exact (and keeps the spring from settling and waking every frame
+            // as its goal creeps).
+            let rate = match rig.tracking.last_zoom {
+                Some(last) if dt > 0.0 => (zoom - last) / dt,
+                _ => 0.0,
+            };
+            rig.tracking.last_zoom = Some(zoom);
             rig.zoom.set_target_if_neq(zoom);
+            set_target_velocity_if_neq(&mut rig.zoom, if rate.is_finite() { rate } else { 0.0 });
             if first_frame {
                 rig.motion.set_zoom(zoom);
             }
