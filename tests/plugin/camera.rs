@@ -812,3 +812,73 @@ fn the_world_changing_under_a_rig_never_panics_nor_writes_nan() {
     app.update();
     assert_eq!(translation(&app, camera), Vec3::ZERO);
 }
+
+#[test]
+fn a_confiner_volume_keeps_an_orbiting_camera_in_the_room_without_a_jolt() {
+    use bevy_sprung::camera::ConfinerVolume;
+
+    const MIN: Vec3 = Vec3::new(-6.0, 0.5, -6.0);
+    const MAX: Vec3 = Vec3::new(6.0, 8.0, 6.0);
+    const SLOWING: f32 = 1.0;
+    for fps in RATES {
+        let orbiting = |volume: bool| {
+            let (mut app, player) =
+                camera_app(fps, (800, 600), |t| Vec3::new(2.0 * t.sin(), 1.0, 0.0));
+            let camera = app
+                .world_mut()
+                .spawn((
+                    Camera3d::default(),
+                    Projection::Perspective(default()),
+                    CameraRig::new(Spring::smooth()),
+                    CameraTargets::single(player),
+                    OrbitRig::new(10.0).with_spring(Spring::snappy()),
+                ))
+                .id();
+            if volume {
+                app.world_mut()
+                    .entity_mut(camera)
+                    .insert(ConfinerVolume::new(MIN, MAX).with_slowing_distance(SLOWING));
+            }
+            (app, camera)
+        };
+        let (mut confined, camera) = orbiting(true);
+        let (mut free, free_camera) = orbiting(false);
+        let dt = 1.0 / fps as f32;
+        let mut history: Vec<(Vec3, Vec3)> = Vec::new();
+        for _ in 0..fps * 4 {
+            for (app, camera) in [(&mut confined, camera), (&mut free, free_camera)] {
+                app.world_mut()
+                    .get_mut::<OrbitRig>(camera)
+                    .unwrap()
+                    .rotate(Vec2::new(2.0 * dt, 0.0));
+                app.update();
+            }
+            let position = translation(&confined, camera);
+            assert!(
+                position.cmpge(MIN - 1e-4).all() && position.cmple(MAX + 1e-4).all(),
+                "{fps} fps: {position} outside the room"
+            );
+            history.push((position, translation(&free, free_camera)));
+        }
+        for w in history.windows(3) {
+            let acceleration = |a: Vec3, b: Vec3, c: Vec3| (c - 2.0 * b + a) / (dt * dt);
+            let confined = acceleration(w[0].0, w[1].0, w[2].0).length();
+            let unconfined = acceleration(w[0].1, w[1].1, w[2].1).length();
+            let speed = ((w[2].1 - w[1].1) / dt)
+                .length()
+                .max(((w[1].1 - w[0].1) / dt).length());
+            // The easing's curvature, summed over the three axes.
+            let easing = 3.0 * speed * speed / (2.0 * SLOWING);
+            assert!(
+                confined <= unconfined + easing + 1.0,
+                "{fps} fps: a jolt ({confined} vs {unconfined} + {easing})"
+            );
+        }
+        // And the walls did push: the free camera leaves the room.
+        assert!(
+            history
+                .iter()
+                .any(|(_, free)| !(free.cmpge(MIN).all() && free.cmple(MAX).all()))
+        );
+    }
+}

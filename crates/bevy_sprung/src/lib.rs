@@ -133,8 +133,8 @@ pub mod prelude {
     pub use crate::camera::CameraOcclusion;
     #[cfg(feature = "camera")]
     pub use crate::camera::{
-        CameraBlend, CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, DeadZone,
-        GroupFraming, LookAhead, OrbitRig, ScreenPosition, VirtualCamera,
+        CameraBlend, CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, ConfinerVolume,
+        DeadZone, GroupFraming, LookAhead, OrbitRig, ScreenPosition, VirtualCamera,
     };
     pub use crate::choreography::{
         Advance, AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted,

@@ -406,6 +406,41 @@ impl Confiner {
     }
 }
 
+/// Keeps the camera's position inside a box (a room, a corridor; Cinemachine's Confiner 3D),
+/// with the same slowing: within [`slowing_distance`](Self::slowing_distance) of a wall the
+/// camera slows down and stops at it, never with a jump in its velocity. Applied last, after an
+/// orbit or an occluder placed the camera; an orbiting camera pushed off its sphere by a wall
+/// keeps its orientation. For the view of a 2D or side-on camera, use [`Confiner`].
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Component, Debug, Clone, PartialEq)]
+pub struct ConfinerVolume {
+    /// The box's least corner.
+    pub min: Vec3,
+    /// The box's greatest corner.
+    pub max: Vec3,
+    /// Over how much distance, in world units, the camera slows down before a wall.
+    pub slowing_distance: f32,
+}
+
+impl ConfinerVolume {
+    /// The camera stays between `min` and `max`, slowing over 0 units.
+    #[must_use]
+    pub fn new(min: Vec3, max: Vec3) -> Self {
+        Self {
+            min,
+            max,
+            slowing_distance: 0.0,
+        }
+    }
+
+    /// The same volume slowing over `distance` world units.
+    #[must_use]
+    pub fn with_slowing_distance(mut self, distance: f32) -> Self {
+        self.slowing_distance = distance;
+        self
+    }
+}
+
 /// Zooms so that every target of [`CameraTargets`] (with its radius) stays in view, with
 /// `margin` of the view free on each side: the zoom springs to fit them
 /// ([`CameraRig::zoom_spring`]) within `min_zoom..=max_zoom`. The framed point is their

@@ -23,10 +23,10 @@ pub use blend::{
     BlendTranslation, BlendTranslationSpring, CameraBlend, VirtualCamera,
 };
 pub use components::{
-    CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, DeadZone, GroupFraming,
-    LookAhead, OrbitRig, RigHorizontal, RigHorizontalSpring, RigLookAhead, RigLookAheadSpring,
-    RigMotion, RigOrbit, RigOrbitSpring, RigVertical, RigVerticalSpring, RigZoom, RigZoomSpring,
-    ScreenPosition, ZoneUnit,
+    CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, ConfinerVolume, DeadZone,
+    GroupFraming, LookAhead, OrbitRig, RigHorizontal, RigHorizontalSpring, RigLookAhead,
+    RigLookAheadSpring, RigMotion, RigOrbit, RigOrbitSpring, RigVertical, RigVerticalSpring,
+    RigZoom, RigZoomSpring, ScreenPosition, ZoneUnit,
 };
 #[cfg(feature = "camera_occlusion")]
 pub use components::{RigClearance, RigClearanceSpring};
@@ -83,6 +83,7 @@ impl Plugin for CameraRigPlugin {
         .register_type::<DeadZone>()
         .register_type::<ScreenPosition>()
         .register_type::<Confiner>()
+        .register_type::<ConfinerVolume>()
         .register_type::<GroupFraming>()
         .register_type::<OrbitRig>()
         .register_type::<RigMotion>();

@@ -7,9 +7,9 @@ use bevy::prelude::*;
 use bevy::window::{PrimaryWindow, Window};
 
 use super::components::{
-    CameraGoal, CameraRig, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
-    RigHorizontalSpring, RigLookAheadSpring, RigMotion, RigOrbitSpring, RigTracking,
-    RigVerticalSpring, RigZoomSpring, ScreenPosition, orbit_rotation,
+    CameraGoal, CameraRig, CameraTargets, Confiner, ConfinerVolume, DeadZone, GroupFraming,
+    LookAhead, OrbitRig, RigHorizontalSpring, RigLookAheadSpring, RigMotion, RigOrbitSpring,
+    RigTracking, RigVerticalSpring, RigZoomSpring, ScreenPosition, orbit_rotation,
 };
 use super::view::{centre_range, ease_into, goal_range, half_extents, viewport_size};
 use crate::clock::SpringTime;
@@ -335,6 +335,7 @@ pub(super) struct RigPose {
 pub(super) struct Posed {
     rig: &'static CameraRig,
     confiner: Option<&'static Confiner>,
+    volume: Option<&'static ConfinerVolume>,
     orbit: Option<&'static OrbitRig>,
     view: View,
 }
@@ -392,7 +393,17 @@ pub(super) fn compose_cameras(
     let window = window.single().ok();
     for (posed, motion, mut transform) in &mut rigs {
         let pose = posed.pose(motion, window);
-        let translation = pose.focus + pose.arm * motion.clearance();
+        let mut translation = pose.focus + pose.arm * motion.clearance();
+        if let Some(volume) = posed.volume {
+            for axis in 0..3 {
+                translation[axis] = ease_into(
+                    translation[axis],
+                    volume.min[axis],
+                    volume.max[axis],
+                    volume.slowing_distance,
+                );
+            }
+        }
         if !translation.is_finite() {
             continue;
         }
