@@ -565,12 +565,20 @@ fn an_occluder_pulls_the_camera_in_and_it_springs_back_out_when_clear() {
         );
 
         // A wall between them: the camera is in front of it (the wall's near face is at 4.75)
-        // the frame after it moved (its `GlobalTransform` is this frame's then).
+        // in the same frame.
         *app.world_mut().get_mut::<Transform>(blocker).unwrap() = blocker_at(5.0);
-        app.update();
         app.update();
         let z = translation(&app, camera).z;
         assert!((z - 4.5).abs() < 1e-3, "{fps} fps: pulled in to {z}");
+        let global = app
+            .world()
+            .get::<GlobalTransform>(camera)
+            .unwrap()
+            .translation();
+        assert!(
+            (global.z - 4.5).abs() < 1e-3,
+            "{fps} fps: rendered from {global}"
+        );
         for _ in 0..fps {
             app.update();
             assert!(
@@ -596,6 +604,25 @@ fn an_occluder_pulls_the_camera_in_and_it_springs_back_out_when_clear() {
             last = z;
         }
         assert!((translation(&app, camera).z - 10.0).abs() < 1e-3);
+
+        // A wall spawned between them this frame pulls the camera in this frame too.
+        let cube = app
+            .world_mut()
+            .resource_mut::<Assets<Mesh>>()
+            .add(Cuboid::new(2.0, 2.0, 0.5));
+        app.world_mut().spawn((
+            Mesh3d(cube),
+            Visibility::Visible,
+            InheritedVisibility::VISIBLE,
+            Aabb::from_min_max(Vec3::new(-1.0, -1.0, -0.25), Vec3::new(1.0, 1.0, 0.25)),
+            blocker_at(7.0),
+        ));
+        app.update();
+        let z = translation(&app, camera).z;
+        assert!(
+            (z - 6.5).abs() < 1e-3,
+            "{fps} fps: pulled in front of a new wall, to {z}"
+        );
     }
 }
 
@@ -881,4 +908,117 @@ fn a_confiner_volume_keeps_an_orbiting_camera_in_the_room_without_a_jolt() {
                 .any(|(_, free)| !(free.cmpge(MIN).all() && free.cmple(MAX).all()))
         );
     }
+}
+
+#[test]
+fn a_change_of_shot_keeps_the_cameras_turn() {
+    use bevy_sprung::camera::{CameraBlend, VirtualCamera};
+
+    /// The first shot turns about the vertical at this rate, rad/s.
+    const TURN: f32 = 3.0;
+    #[derive(Component)]
+    struct Turning;
+    fn turn(time: Res<Time>, mut shots: Query<&mut Transform, With<Turning>>) {
+        for mut shot in &mut shots {
+            shot.rotation = Quat::from_rotation_y(TURN * time.elapsed_secs());
+        }
+    }
+    let blend_spring: Spring = Spring::smooth();
+    for fps in RATES {
+        let (mut app, _) = camera_app(fps, (800, 600), |_| Vec3::ZERO);
+        app.add_systems(Update, turn);
+        app.world_mut()
+            .spawn((Turning, Transform::default(), VirtualCamera::new(1)));
+        let still = app
+            .world_mut()
+            .spawn((Transform::default(), VirtualCamera::new(0)))
+            .id();
+        let camera = app
+            .world_mut()
+            .spawn((Camera3d::default(), CameraBlend::new(blend_spring)))
+            .id();
+        for _ in 0..fps / 2 {
+            app.update();
+        }
+        // The still shot stands a tenth of a radian ahead of where the camera will be after the
+        // next frame (placed a frame early: a shot that jumps has no meaningful velocity)...
+        let elapsed = app.world().resource::<Time>().elapsed_secs() + 1.0 / fps as f32;
+        let target = Quat::from_rotation_y(TURN * elapsed + 0.1);
+        app.world_mut()
+            .get_mut::<Transform>(still)
+            .unwrap()
+            .rotation = target;
+        app.update();
+        let before = app.world().get::<Transform>(camera).unwrap().rotation;
+        assert!((target.inverse() * before).angle_between(Quat::from_rotation_y(-0.1)) < 1e-4);
+        // ...and takes over.
+        app.world_mut()
+            .get_mut::<VirtualCamera>(still)
+            .unwrap()
+            .priority = 2;
+        app.update();
+        let after = app.world().get::<Transform>(camera).unwrap().rotation;
+        // One step of the blend spring on the rotation offset, from −0.1 rad turning at TURN.
+        let dt = 1.0 / fps as f32;
+        let [[f0, f1], _] = blend_spring.transition(dt).matrix();
+        let expected = target * Quat::from_rotation_y(-0.1 * f0 + TURN * f1);
+        let error = after.angle_between(expected);
+        assert!(error < 1e-3, "{fps} fps: {error} rad from the exact step");
+        // Dropping the turn would be off by about TURN·dt.
+        assert!(TURN * f1 > 20.0 * error);
+    }
+}
+
+#[test]
+fn targets_moving_in_fixed_update_are_followed_without_jitter_under_uneven_frames() {
+    const VELOCITY: Vec3 = Vec3::new(6.0, 0.0, -2.0);
+    fn step_player(time: Res<Time>, mut players: Query<&mut Transform, With<Player>>) {
+        for mut transform in &mut players {
+            transform.translation += VELOCITY * time.delta_secs();
+        }
+    }
+    let spring = Spring::from_natural_frequency(4.0, 1.0).unwrap();
+    let lag = -VELOCITY * spring.damping() / spring.stiffness();
+    let run = |pattern: &[f64], fixed: bool| {
+        let mut app = app(60);
+        app.insert_resource(Time::<Fixed>::from_hz(64.0))
+            .add_systems(FixedUpdate, step_player);
+        let player = app.world_mut().spawn((Player, Transform::default())).id();
+        let targets = CameraTargets::single(player);
+        let targets = if fixed {
+            targets.moving_in_fixed_update()
+        } else {
+            targets
+        };
+        let camera = app
+            .world_mut()
+            .spawn((CameraRig::new(spring), targets))
+            .id();
+        let (mut elapsed, mut worst) = (0.0, 0.0_f32);
+        for frame in 0.. {
+            let dt = pattern[frame % pattern.len()];
+            app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+                dt,
+            )));
+            app.update();
+            elapsed += dt;
+            if elapsed > 4.0 {
+                break;
+            }
+            if elapsed > 2.5 {
+                // Against the target's continuous-time position, which the fixed steps sample.
+                let continuous = VELOCITY * app.world().resource::<Time<Virtual>>().elapsed_secs();
+                let offset = translation(&app, camera) - continuous;
+                worst = worst.max(offset.distance(lag));
+            }
+        }
+        worst
+    };
+    for pattern in patterns() {
+        let smooth = run(&pattern, true);
+        assert!(smooth < 1e-3, "{pattern:?}: off the steady lag by {smooth}");
+    }
+    // Sampled once per frame instead, the same target wobbles around the lag.
+    let wobble = run(&[1.0 / 144.0, 1.0 / 30.0], false);
+    assert!(wobble > 20.0 * 1e-3, "per-frame sampling: {wobble}");
 }

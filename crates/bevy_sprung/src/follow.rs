@@ -27,9 +27,23 @@ pub enum TargetMotion {
 
 /// The last two fixed-step positions of a followed entity.
 #[derive(Reflect, Debug, Default, Clone, Copy, PartialEq)]
-struct FixedSamples {
+pub(crate) struct FixedSamples {
     previous: Option<Vec3>,
     latest: Option<Vec3>,
+}
+
+impl FixedSamples {
+    /// Records where the target is after a fixed step; a target gone forgets its samples, so
+    /// that it is not followed along a stale velocity.
+    pub(crate) fn record(&mut self, position: Option<Vec3>) {
+        match position {
+            Some(position) => {
+                let latest = self.latest.replace(position);
+                self.previous = latest;
+            }
+            None => *self = Self::default(),
+        }
+    }
 }
 
 /// Makes this entity follow `target` with its [`TranslationSpring`], at `offset` from it, and
@@ -148,13 +162,8 @@ fn sample_fixed_targets(
         if follow.motion != TargetMotion::FixedTimestep {
             continue;
         }
-        match world_position(follow.target, &transforms, &globals) {
-            Some(position) => {
-                let latest = follow.fixed.latest.replace(position);
-                follow.fixed.previous = latest;
-            }
-            None => follow.fixed = FixedSamples::default(),
-        }
+        let position = world_position(follow.target, &transforms, &globals);
+        follow.fixed.record(position);
     }
 }
 
@@ -213,7 +222,10 @@ fn follow_targets(
 
 /// Where a target that moves in `FixedUpdate` is this frame, and its velocity, from its last
 /// two fixed-step samples; from one, where it stands.
-fn fixed_sample(samples: FixedSamples, fixed_time: &Time<Fixed>) -> Option<(Vec3, Vec3)> {
+pub(crate) fn fixed_sample(
+    samples: FixedSamples,
+    fixed_time: &Time<Fixed>,
+) -> Option<(Vec3, Vec3)> {
     match samples {
         FixedSamples {
             previous: Some(previous),

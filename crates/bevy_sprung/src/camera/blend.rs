@@ -1,14 +1,17 @@
 //! Blends between virtual cameras: the rendering camera shows the live shot with the highest
 //! priority, and a change of shot is a spring from where the camera is, velocity kept.
 
+use core::any::TypeId;
+
 use bevy::camera::Projection;
 use bevy::ecs::entity::EntityHashMap;
 use bevy::prelude::*;
 use sprung::Spring;
 
 use crate::clock::SpringTime;
+use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Linear, ShortestArc};
-use crate::spring::PropertySpring;
+use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_systems};
 
 /// Makes a [`CameraRig`](super::CameraRig) (or any entity with a `Transform`) one shot among
 /// several: it places itself as usual but renders nothing (give it no `Camera`), and the
@@ -68,8 +71,8 @@ impl VirtualCamera {
 /// a projection of the same kind) every frame; when another shot takes over, it springs from
 /// where it was to the new shot with [`spring`](Self::spring) — position, rotation and lens —
 /// so a cut becomes a smooth move, and once the blend has settled it is exactly on the shot
-/// again. The camera's velocity is kept across the change (its rotation and lens start from
-/// rest relative to the new shot). The first shot is a cut. [`BlendTrack::shot`] says which
+/// again. The camera's velocity, angular velocity and lens rate are kept across the change.
+/// The first shot is a cut. [`BlendTrack::shot`] says which
 /// shot shows.
 ///
 /// The blend is an offset from the new shot that springs to zero, so a moving shot is followed
@@ -144,8 +147,9 @@ pub type BlendLensSpring = PropertySpring<BlendLens>;
 #[reflect(Component, Debug, Clone, PartialEq, Default)]
 pub struct BlendTrack {
     shot: Option<Entity>,
-    last_translation: Option<Vec3>,
-    velocity: Vec3,
+    /// Where the camera was last frame, and how fast it moved.
+    #[reflect(ignore)]
+    motion: Option<(Pose, PoseRate)>,
 }
 
 impl BlendTrack {
@@ -156,9 +160,60 @@ impl BlendTrack {
     }
 }
 
-/// Where each shot was last frame, for its velocity at a change of shot.
+/// Where each shot was last frame, and how fast it moved, for a change of shot.
 #[derive(Resource, Default)]
-pub(super) struct ShotMotion(EntityHashMap<(Vec3, Vec3)>);
+pub(super) struct ShotMotion(EntityHashMap<(Pose, PoseRate)>);
+
+/// What a blend moves: a camera's translation, rotation and lens.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Pose {
+    translation: Vec3,
+    rotation: Quat,
+    lens: Option<f32>,
+}
+
+/// How fast a [`Pose`] changes: velocity, world angular velocity and the lens's rate.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct PoseRate {
+    translation: Vec3,
+    rotation: Vec3,
+    lens: f32,
+}
+
+impl Pose {
+    fn of(transform: &Transform, projection: Option<&Projection>) -> Self {
+        Self {
+            translation: transform.translation,
+            rotation: transform.rotation,
+            lens: projection.and_then(lens),
+        }
+    }
+
+    /// The rate from `last` to this pose over `dt` (the last rate if `dt` is 0, nothing where
+    /// it would not be finite).
+    fn rate_since(self, last: Option<(Self, PoseRate)>, dt: f32) -> PoseRate {
+        let Some((last, last_rate)) = last else {
+            return PoseRate::default();
+        };
+        if dt <= 0.0 {
+            return last_rate;
+        }
+        // The turn since last frame, the short way, as a world angular velocity.
+        let turn = self.rotation * last.rotation.inverse();
+        let turn = if turn.w < 0.0 { -turn } else { turn };
+        let rate = PoseRate {
+            translation: (self.translation - last.translation) / dt,
+            rotation: turn.to_scaled_axis() / dt,
+            lens: self
+                .lens
+                .zip(last.lens)
+                .map_or(0.0, |(now, last)| (now - last) / dt),
+        };
+        let finite =
+            rate.translation.is_finite() && rate.rotation.is_finite() && rate.lens.is_finite();
+        if finite { rate } else { PoseRate::default() }
+    }
+}
 
 /// The lens of a projection: an orthographic scale or a field of view.
 fn lens(projection: &Projection) -> Option<f32> {
@@ -187,27 +242,18 @@ fn same_kind(a: &Projection, b: &Projection) -> bool {
     )
 }
 
-/// Each shot's velocity this frame, from where it was last frame.
+/// Each shot's motion this frame, from where it was last frame.
 pub(super) fn track_shots(
     time: SpringTime,
-    shots: Query<(Entity, &Transform), With<VirtualCamera>>,
+    shots: Query<(Entity, &Transform, Option<&Projection>), With<VirtualCamera>>,
     mut motion: ResMut<ShotMotion>,
 ) {
     let dt = time.steps().dt(None);
     motion.0.retain(|shot, _| shots.contains(*shot));
-    for (shot, transform) in &shots {
-        let now = transform.translation;
-        let velocity = match motion.0.get(&shot) {
-            Some(&(last, _)) if dt > 0.0 => (now - last) / dt,
-            Some(&(_, velocity)) => velocity,
-            None => Vec3::ZERO,
-        };
-        let velocity = if velocity.is_finite() {
-            velocity
-        } else {
-            Vec3::ZERO
-        };
-        motion.0.insert(shot, (now, velocity));
+    for (shot, transform, projection) in &shots {
+        let now = Pose::of(transform, projection);
+        let rate = now.rate_since(motion.0.get(&shot).copied(), dt);
+        motion.0.insert(shot, (now, rate));
     }
 }
 
@@ -275,18 +321,28 @@ pub(super) fn switch_shots(
         if first {
             continue;
         }
-        let shot_velocity = best
+        let shot_rate = best
             .and_then(|best| motion.0.get(&best))
-            .map_or(Vec3::ZERO, |&(_, velocity)| velocity);
+            .map_or(PoseRate::default(), |&(_, rate)| rate);
+        let camera_rate = track.motion.map_or(PoseRate::default(), |(_, rate)| rate);
+        // The offsets from the new shot, and their rates: the camera's motion relative to the
+        // shot's. A rotation offset `shot⁻¹·camera` turns at the difference of the two world
+        // angular velocities, seen in the shot's frame.
         offset.translation = transform.translation - shot.translation;
-        translation.set_velocity(track.velocity - shot_velocity);
+        translation.set_velocity(camera_rate.translation - shot_rate.translation);
         offset.rotation = (shot.rotation.inverse() * transform.rotation).normalize();
-        offset.lens = match (projection, shot_projection) {
-            (Some(camera), Some(shot)) if same_kind(camera, shot) => lens(camera)
-                .zip(lens(shot))
-                .map_or(0.0, |(camera, shot)| camera - shot),
-            _ => 0.0,
+        rotation
+            .set_velocity(shot.rotation.inverse() * (camera_rate.rotation - shot_rate.rotation));
+        let lenses = match (projection, shot_projection) {
+            (Some(camera), Some(shot)) if same_kind(camera, shot) => lens(camera).zip(lens(shot)),
+            _ => None,
         };
+        offset.lens = lenses.map_or(0.0, |(camera, shot)| camera - shot);
+        lens_spring.set_velocity(if lenses.is_some() {
+            camera_rate.lens - shot_rate.lens
+        } else {
+            0.0
+        });
     }
 }
 
@@ -318,22 +374,53 @@ pub(super) fn compose_blends(
         if rotation.is_finite() && transform.rotation != rotation {
             transform.rotation = rotation;
         }
-        if let (Some(mut projection), Some(shot_projection)) = (projection, shot_projection) {
-            if !same_kind(&projection, shot_projection) {
-                *projection = shot_projection.clone();
+        let mut projection = projection;
+        if let (Some(projection), Some(shot_projection)) = (projection.as_mut(), shot_projection) {
+            if !same_kind(projection, shot_projection) {
+                **projection = shot_projection.clone();
             } else if let Some(value) = lens(shot_projection).map(|shot| shot + offset.lens)
                 && value.is_finite()
-                && lens(&projection) != Some(value)
+                && lens(projection) != Some(value)
             {
-                set_lens(&mut projection, value);
+                set_lens(projection, value);
             }
         }
-        let now = transform.translation;
-        if let Some(last) = track.last_translation
-            && dt > 0.0
-        {
-            track.velocity = (now - last) / dt;
-        }
-        track.last_translation = Some(now);
+        let now = Pose::of(&transform, projection.as_deref());
+        let rate = now.rate_since(track.motion, dt);
+        track.motion = Some((now, rate));
+    }
+}
+
+/// [`VirtualCamera`] and [`CameraBlend`] (part of [`CameraRigPlugin`](super::CameraRigPlugin)):
+/// the blend's springs, after the rigs' (the shots are placed first), and their systems with the
+/// first blend.
+#[derive(Debug, Default, Clone, Copy)]
+pub(super) struct CameraBlendPlugin;
+
+impl Plugin for CameraBlendPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins((
+            SpringPropertyPlugin::<BlendTranslation>::default(),
+            SpringPropertyPlugin::<BlendRotation>::default(),
+            SpringPropertyPlugin::<BlendLens>::default(),
+        ))
+        .init_resource::<ShotMotion>()
+        .register_type::<VirtualCamera>()
+        .register_type::<CameraBlend>()
+        .register_type::<BlendTrack>()
+        .register_type::<BlendOffset>();
+        let blends = [TypeId::of::<PropertySpring<BlendTranslation>>()];
+        add_property_systems(app, &blends, |schedule| {
+            schedule.add_systems(
+                (
+                    (track_shots, switch_shots).chain().in_set(
+                        PropertySystems::<BlendTranslation>::phase(SpringPhase::Input),
+                    ),
+                    compose_blends
+                        .in_set(PropertySystems::<BlendLens>::phase(SpringPhase::Observe)),
+                )
+                    .run_if(any_with_component::<CameraBlend>),
+            );
+        });
     }
 }

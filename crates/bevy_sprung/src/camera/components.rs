@@ -5,6 +5,7 @@ use alloc::vec::Vec;
 use bevy::prelude::*;
 use sprung::Spring;
 
+use crate::follow::{FixedSamples, TargetMotion};
 use crate::space::Linear;
 use crate::spring::PropertySpring;
 
@@ -235,21 +236,47 @@ impl CameraTarget {
 /// (with their radii) is what [`GroupFraming`] keeps in view. Targets that are gone (despawned,
 /// or without a `Transform`) are left out; with none left, the camera comes to rest on its
 /// last goal.
+///
+/// Targets that move in `FixedUpdate` (fixed-timestep gameplay or physics) are sampled after
+/// each fixed step and followed between steps along their fixed-step velocity
+/// ([`moving_in_fixed_update`](Self::moving_in_fixed_update), as
+/// [`SpringFollow`](crate::follow::SpringFollow) does): frames and fixed steps that do not line
+/// up then give a steady lag with no jitter.
 #[derive(Component, Reflect, Debug, Clone, PartialEq, Default)]
+#[component(on_add = crate::spring::first_use::<CameraTargets>)]
 #[reflect(Component, Debug, Clone, PartialEq, Default)]
-pub struct CameraTargets(pub Vec<CameraTarget>);
+pub struct CameraTargets {
+    /// The targets.
+    pub targets: Vec<CameraTarget>,
+    /// How they move.
+    pub motion: TargetMotion,
+    /// Each target's last fixed-step positions (`TargetMotion::FixedTimestep`).
+    #[reflect(ignore)]
+    pub(crate) fixed: Vec<FixedSamples>,
+}
 
 impl CameraTargets {
     /// Frame `entity` alone.
     #[must_use]
     pub fn single(entity: Entity) -> Self {
-        Self(alloc::vec![CameraTarget::new(entity)])
+        Self::new([entity])
     }
 
     /// Frame these targets (entities or [`CameraTarget`]s).
     #[must_use]
     pub fn new(targets: impl IntoIterator<Item = impl Into<CameraTarget>>) -> Self {
-        Self(targets.into_iter().map(Into::into).collect())
+        Self {
+            targets: targets.into_iter().map(Into::into).collect(),
+            motion: TargetMotion::PerFrame,
+            fixed: Vec::new(),
+        }
+    }
+
+    /// The targets move in `FixedUpdate`: see [`TargetMotion::FixedTimestep`].
+    #[must_use]
+    pub fn moving_in_fixed_update(mut self) -> Self {
+        self.motion = TargetMotion::FixedTimestep;
+        self
     }
 }
 

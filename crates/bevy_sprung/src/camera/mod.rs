@@ -34,7 +34,9 @@ pub use components::{RigClearance, RigClearanceSpring};
 pub use occlusion::CameraOcclusion;
 
 use crate::property_plugin::SpringPropertyPlugin;
-use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_systems};
+use crate::spring::{
+    PropertySpring, PropertySystems, SpringPhase, add_property_systems, add_systems_on_first_use,
+};
 
 /// The stages of a rig's frame in [`SpringUpdate`](crate::spring::SpringUpdate), in this
 /// order. Put a system of your own that computes or changes a [`CameraGoal`] in
@@ -70,8 +72,7 @@ impl Plugin for CameraRigPlugin {
         ));
         // The clearance steps before the camera is placed, from the last frame's pull.
         #[cfg(feature = "camera_occlusion")]
-        app.add_plugins(SpringPropertyPlugin::<RigClearance>::default())
-            .register_type::<CameraOcclusion>();
+        app.add_plugins(occlusion::CameraOcclusionPlugin);
         app.add_plugins((
             SpringPropertyPlugin::<RigHorizontal>::default(),
             SpringPropertyPlugin::<RigVertical>::default(),
@@ -87,32 +88,19 @@ impl Plugin for CameraRigPlugin {
         .register_type::<GroupFraming>()
         .register_type::<OrbitRig>()
         .register_type::<RigMotion>();
+        // Targets that move in `FixedUpdate` are sampled after each fixed step.
+        add_systems_on_first_use(
+            app,
+            &[TypeId::of::<CameraTargets>()],
+            FixedPostUpdate,
+            |schedule| {
+                schedule.add_systems(
+                    systems::sample_fixed_targets.run_if(any_with_component::<CameraTargets>),
+                );
+            },
+        );
         // Blends come after the shots (rigs) are placed.
-        app.add_plugins((
-            SpringPropertyPlugin::<BlendTranslation>::default(),
-            SpringPropertyPlugin::<BlendRotation>::default(),
-            SpringPropertyPlugin::<BlendLens>::default(),
-        ))
-        .init_resource::<blend::ShotMotion>()
-        .register_type::<VirtualCamera>()
-        .register_type::<CameraBlend>()
-        .register_type::<BlendTrack>()
-        .register_type::<BlendOffset>();
-        let blends = [TypeId::of::<PropertySpring<BlendTranslation>>()];
-        add_property_systems(app, &blends, |schedule| {
-            schedule.add_systems(
-                (
-                    (blend::track_shots, blend::switch_shots)
-                        .chain()
-                        .in_set(PropertySystems::<BlendTranslation>::phase(
-                            SpringPhase::Input,
-                        )),
-                    blend::compose_blends
-                        .in_set(PropertySystems::<BlendLens>::phase(SpringPhase::Observe)),
-                )
-                    .run_if(any_with_component::<CameraBlend>),
-            );
-        });
+        app.add_plugins(blend::CameraBlendPlugin);
         let springs = [TypeId::of::<PropertySpring<RigHorizontal>>()];
         add_property_systems(app, &springs, |schedule| {
             // The rig's properties run in the order the plugin added them: look-ahead, zoom,
@@ -147,14 +135,6 @@ impl Plugin for CameraRigPlugin {
                     )
                         .run_if(any_with_component::<CameraRig>),
                 );
-            #[cfg(feature = "camera_occlusion")]
-            schedule.add_systems(
-                occlusion::occlude
-                    .in_set(CameraRigSystems::Compose)
-                    .before(systems::compose_cameras)
-                    .run_if(any_with_component::<CameraOcclusion>)
-                    .run_if(occlusion::meshes_exist),
-            );
         });
     }
 }

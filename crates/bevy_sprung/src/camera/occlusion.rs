@@ -6,9 +6,12 @@ use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 use sprung::Spring;
 
-use super::components::{CameraTargets, RigClearanceSpring, RigMotion};
+use core::any::TypeId;
+
+use super::components::{CameraTargets, RigClearance, RigClearanceSpring, RigMotion};
 use super::systems::Posed;
-use crate::spring::{PropertySpring, SpringTargetMut};
+use crate::property_plugin::SpringPropertyPlugin;
+use crate::spring::{PropertySpring, SpringTargetMut, add_systems_on_first_use};
 
 /// Keeps a [`CameraRig`](super::CameraRig)'s view of the point it frames clear: when a mesh is
 /// between them (Bevy's `MeshRayCast`, along the rig's arm from the point to the camera), the
@@ -16,6 +19,11 @@ use crate::spring::{PropertySpring, SpringTargetMut};
 /// hit; when the way is clear again it springs back out with [`spring`](Self::spring). The
 /// rig's targets and their descendants never occlude. Meshes are tested as Bevy's picking
 /// sees them (`Aabb`s computed by Bevy's visibility systems; hidden meshes ignored).
+///
+/// The ray is cast in `PostUpdate` after transform propagation and Bevy's bounds, so a blocker
+/// moved or spawned this frame is seen this frame; a pulled-in camera's `Transform` and
+/// `GlobalTransform` are both written then (its children follow the next frame, and a
+/// [`CameraBlend`](super::CameraBlend) showing the rig as a shot sees the pull the next frame).
 ///
 /// Needs feature `camera_occlusion` (`bevy/mesh_picking`); a game without it pays nothing.
 ///
@@ -38,6 +46,7 @@ use crate::spring::{PropertySpring, SpringTargetMut};
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
+#[component(on_add = crate::spring::first_use::<CameraOcclusion>)]
 #[require(RigClearanceSpring = PropertySpring::new(Spring::smooth(), 1.0))]
 #[reflect(Component, Debug, Clone, PartialEq)]
 pub struct CameraOcclusion {
@@ -78,24 +87,28 @@ pub(super) fn meshes_exist(meshes: Option<Res<Assets<Mesh>>>, mut warned: Local<
     meshes.is_some()
 }
 
-/// Before the camera is placed: cast each occluded rig's arm, pull the camera in to the
-/// nearest hit, and aim its clearance spring at what is clear (all of the arm once nothing is
-/// hit).
+/// What an occluded rig is read and written through.
+type Occluded<'a> = (
+    Entity,
+    Posed,
+    &'a CameraOcclusion,
+    &'a mut RigMotion,
+    &'a mut RigClearanceSpring,
+    Option<&'a CameraTargets>,
+    &'a mut Transform,
+);
+
+/// After transforms and bounds are current: cast each occluded rig's arm, pull the camera in
+/// to the nearest hit, and aim its clearance spring at what is clear (all of the arm once
+/// nothing is hit).
 pub(super) fn occlude(
-    mut rigs: Query<(
-        Entity,
-        Posed,
-        &CameraOcclusion,
-        &mut RigMotion,
-        &mut RigClearanceSpring,
-        Option<&CameraTargets>,
-    )>,
+    mut rigs: Query<Occluded>,
     window: Query<&Window, With<PrimaryWindow>>,
     parents: Query<&ChildOf>,
     mut ray_cast: MeshRayCast,
 ) {
     let window = window.single().ok();
-    for (camera, posed, occlusion, mut motion, mut spring, targets) in &mut rigs {
+    for (camera, posed, occlusion, mut motion, mut spring, targets, mut transform) in &mut rigs {
         if spring.spring() != &occlusion.spring {
             spring.set_spring(occlusion.spring);
         }
@@ -109,7 +122,12 @@ pub(super) fn occlude(
             targets.is_some_and(|targets| {
                 core::iter::once(entity)
                     .chain(parents.iter_ancestors(entity))
-                    .any(|ancestor| targets.0.iter().any(|target| target.entity == ancestor))
+                    .any(|ancestor| {
+                        targets
+                            .targets
+                            .iter()
+                            .any(|target| target.entity == ancestor)
+                    })
             })
         };
         let filter = |entity: Entity| entity != camera && !is_target(entity);
@@ -129,7 +147,62 @@ pub(super) fn occlude(
             // In front of the occluder this frame, from rest: the spring moves it out from here.
             motion.set_clearance(clear);
             spring.set_velocity(0.0);
+            let translation = posed.place(&pose, clear);
+            if translation.is_finite() && transform.translation != translation {
+                transform.translation = translation;
+            }
         }
         spring.set_target_if_neq(clear);
+    }
+}
+
+/// After [`occlude`]: the `GlobalTransform` of a camera pulled in this frame, so that it renders
+/// from where it was pulled to (propagation ran before the ray could be cast).
+pub(super) fn place_pulled_cameras(
+    mut cameras: Query<
+        (&Transform, &mut GlobalTransform, Option<&ChildOf>),
+        (With<CameraOcclusion>, Changed<Transform>),
+    >,
+    parents: Query<&GlobalTransform, Without<CameraOcclusion>>,
+) {
+    for (transform, mut global, parent) in &mut cameras {
+        let placed = match parent.and_then(|parent| parents.get(parent.parent()).ok()) {
+            Some(parent) => parent.mul_transform(*transform),
+            None => GlobalTransform::from(*transform),
+        };
+        global.set_if_neq(placed);
+    }
+}
+
+/// [`CameraOcclusion`] (part of [`CameraRigPlugin`](super::CameraRigPlugin) with feature
+/// `camera_occlusion`): the clearance spring, and the ray cast after transform propagation.
+#[derive(Debug, Default, Clone, Copy)]
+pub(super) struct CameraOcclusionPlugin;
+
+impl Plugin for CameraOcclusionPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins(SpringPropertyPlugin::<RigClearance>::default())
+            .register_type::<CameraOcclusion>();
+        // Occlusion sees this frame's transforms and bounds: after propagation, before the
+        // cameras' frusta are computed; with the first occluded rig.
+        add_systems_on_first_use(
+            app,
+            &[TypeId::of::<CameraOcclusion>()],
+            PostUpdate,
+            |schedule| {
+                use bevy::camera::visibility::VisibilitySystems;
+                use bevy::transform::TransformSystems;
+                schedule.add_systems(
+                    (occlude, place_pulled_cameras)
+                        .chain()
+                        .after(TransformSystems::Propagate)
+                        .after(VisibilitySystems::CalculateBounds)
+                        .after(VisibilitySystems::VisibilityPropagate)
+                        .before(VisibilitySystems::UpdateFrusta)
+                        .run_if(any_with_component::<CameraOcclusion>)
+                        .run_if(meshes_exist),
+                );
+            },
+        );
     }
 }

@@ -13,24 +13,58 @@ use super::components::{
 };
 use super::view::{centre_range, ease_into, goal_range, half_extents, viewport_size};
 use crate::clock::SpringTime;
-use crate::follow::world_position;
+use crate::follow::{FixedSamples, TargetMotion, fixed_sample, world_position};
 use crate::spring::SpringTargetMut;
 
-/// Where each rig's targets are: their weighted centre and spread become its goal.
+/// After each fixed step: where the targets of rigs whose targets move in `FixedUpdate` are.
+pub(super) fn sample_fixed_targets(
+    mut rigs: Query<&mut CameraTargets>,
+    transforms: Query<(&Transform, Option<&ChildOf>)>,
+    globals: Query<&GlobalTransform>,
+) {
+    for mut targets in &mut rigs {
+        if targets.motion != TargetMotion::FixedTimestep {
+            continue;
+        }
+        let targets = &mut *targets;
+        // Resized only when targets are added or removed.
+        targets
+            .fixed
+            .resize(targets.targets.len(), FixedSamples::default());
+        for (target, samples) in targets.targets.iter().zip(&mut targets.fixed) {
+            samples.record(world_position(target.entity, &transforms, &globals));
+        }
+    }
+}
+
+/// Where each rig's targets are: their weighted centre and spread become its goal. Targets
+/// that move in `FixedUpdate` are where their fixed steps put them now (see
+/// [`TargetMotion::FixedTimestep`]).
 pub(super) fn sample_targets(
     mut rigs: Query<(Entity, &CameraTargets, &Transform, &mut CameraGoal)>,
     transforms: Query<(&Transform, Option<&ChildOf>)>,
     globals: Query<&GlobalTransform>,
+    fixed_time: Res<Time<Fixed>>,
 ) {
     for (rig, targets, transform, mut goal) in &mut rigs {
         let found = || {
-            targets.0.iter().filter_map(|target| {
-                let usable =
-                    target.entity != rig && target.weight.is_finite() && target.weight > 0.0;
-                let position =
-                    usable.then(|| world_position(target.entity, &transforms, &globals))??;
-                position.is_finite().then_some((position, target))
-            })
+            targets
+                .targets
+                .iter()
+                .enumerate()
+                .filter_map(|(i, target)| {
+                    let usable =
+                        target.entity != rig && target.weight.is_finite() && target.weight > 0.0;
+                    let position =
+                        usable.then(|| world_position(target.entity, &transforms, &globals))??;
+                    let position = match (targets.motion, targets.fixed.get(i)) {
+                        (TargetMotion::FixedTimestep, Some(&samples)) => {
+                            fixed_sample(samples, &fixed_time).map_or(position, |(now, _)| now)
+                        }
+                        _ => position,
+                    };
+                    position.is_finite().then_some((position, target))
+                })
         };
         let (sum, weight) = found().fold((Vec3::ZERO, 0.0), |(sum, weight), (position, target)| {
             (sum + position * target.weight, weight + target.weight)
@@ -384,17 +418,12 @@ impl PosedItem<'_, '_> {
     }
 }
 
-/// After the springs stepped: the camera's translation and rotation, written only where they
-/// change. An occluder's pull (the clearance) shortens the arm.
-pub(super) fn compose_cameras(
-    mut rigs: Query<(Posed, &RigMotion, &mut Transform)>,
-    window: Query<&Window, With<PrimaryWindow>>,
-) {
-    let window = window.single().ok();
-    for (posed, motion, mut transform) in &mut rigs {
-        let pose = posed.pose(motion, window);
-        let mut translation = pose.focus + pose.arm * motion.clearance();
-        if let Some(volume) = posed.volume {
+impl PosedItem<'_, '_> {
+    /// Where the camera of `pose` is with `clearance` of its arm clear: on the arm, eased into
+    /// its [`ConfinerVolume`].
+    pub(super) fn place(&self, pose: &RigPose, clearance: f32) -> Vec3 {
+        let mut translation = pose.focus + pose.arm * clearance;
+        if let Some(volume) = self.volume {
             for axis in 0..3 {
                 translation[axis] = ease_into(
                     translation[axis],
@@ -404,6 +433,20 @@ pub(super) fn compose_cameras(
                 );
             }
         }
+        translation
+    }
+}
+
+/// After the springs stepped: the camera's translation and rotation, written only where they
+/// change. An occluder's pull (the clearance) shortens the arm.
+pub(super) fn compose_cameras(
+    mut rigs: Query<(Posed, &RigMotion, &mut Transform)>,
+    window: Query<&Window, With<PrimaryWindow>>,
+) {
+    let window = window.single().ok();
+    for (posed, motion, mut transform) in &mut rigs {
+        let pose = posed.pose(motion, window);
+        let translation = posed.place(&pose, motion.clearance());
         if !translation.is_finite() {
             continue;
         }
