@@ -1022,3 +1022,44 @@ fn targets_moving_in_fixed_update_are_followed_without_jitter_under_uneven_frame
     let wobble = run(&[1.0 / 144.0, 1.0 / 30.0], false);
     assert!(wobble > 20.0 * 1e-3, "per-frame sampling: {wobble}");
 }
+
+#[test]
+fn a_rig_removed_or_stripped_mid_motion_comes_to_rest() {
+    use bevy_sprung::camera::{RigHorizontal, RigVertical};
+
+    let (mut app, player) = camera_app(60, (800, 600), |t| Vec3::new(300.0 * t, 100.0 * t, 0.0));
+    let removed = app
+        .world_mut()
+        .spawn((
+            camera_2d(CameraRig::new(Spring::smooth())),
+            CameraTargets::single(player),
+        ))
+        .id();
+    let stripped = app
+        .world_mut()
+        .spawn((
+            camera_2d(CameraRig::new(Spring::smooth())),
+            CameraTargets::single(player),
+        ))
+        .id();
+    for _ in 0..60 {
+        app.update();
+    }
+    // The rig taken off one camera, the Transform off the other (it warns once).
+    app.world_mut().entity_mut(removed).remove::<CameraRig>();
+    app.world_mut().entity_mut(stripped).remove::<Transform>();
+    for _ in 0..600 {
+        app.update();
+    }
+    // Without its rig, a camera's springs stop following and rest.
+    let world = app.world();
+    assert!(
+        world.get::<SpringAsleep<RigHorizontal>>(removed).is_some(),
+        "still moving"
+    );
+    assert!(world.get::<SpringAsleep<RigVertical>>(removed).is_some());
+    assert!(translation(&app, removed).is_finite());
+    // Without its Transform, a rig still follows its target (with nothing to place).
+    let motion = world.get::<RigMotion>(stripped).unwrap();
+    assert!(motion.centre().is_finite() && motion.centre().x > 1000.0);
+}

@@ -14,6 +14,7 @@ use core::f32::consts::PI;
 use std::time::Duration;
 
 use bevy::camera::visibility::ViewVisibility;
+use bevy::camera::{OrthographicProjection, Projection};
 use bevy::ecs::entity_disabling::Disabled;
 use bevy::ecs::query::Allow;
 use bevy::ecs::world::DeferredWorld;
@@ -21,6 +22,10 @@ use bevy::math::VectorSpace;
 use bevy::platform::collections::HashSet;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
+use bevy_sprung::camera::{
+    BlendLens, BlendRotation, BlendTranslation, CameraGoal, ConfinerVolume, RigHorizontal,
+    RigHorizontalSpring, RigLookAhead, RigOrbit, RigVertical, RigZoom,
+};
 use bevy_sprung::interaction::{DragReleased, InteractionTargets, SpringDrag};
 use bevy_sprung::prelude::*;
 use bevy_sprung::property::{SpringProperty, ValueOf, VelocityOf};
@@ -603,6 +608,9 @@ const OPERATIONS: &[(&str, fn(&mut World))] = &[
     ("reduced motion", reduced_motion),
     ("default clock", default_clock),
     ("game clock", game_clock),
+    ("camera rig", camera_rig),
+    ("camera shots", camera_shots),
+    ("window", resize_window),
 ];
 
 /// A live entity to operate on (of `kind`, if given), with the operation noted in its story.
@@ -711,6 +719,181 @@ fn follow(world: &mut World) {
         follow = follow.looking_at(Vec3::ZERO);
     }
     follower.insert(follow);
+}
+
+/// A camera rig on a new entity framing live (or despawned) leaders and bodies, orthographic
+/// or perspective, with a random set of parts; or a part of a live rig added, changed or
+/// removed. Rigs have no `Kind`: the entity operations (despawn, clone, disable, reparent) reach
+/// them, the property operations do not.
+fn camera_rig(world: &mut World) {
+    let rigs: Vec<Entity> = world
+        .query_filtered::<Entity, With<CameraRig>>()
+        .iter(world)
+        .collect();
+    if rigs.is_empty() || draw(world, |random| random.chance(0.3)) {
+        let targets: Vec<CameraTarget> = (0..draw(world, |random| 1 + random.below(3)))
+            .map(|_| {
+                let entity = live(world, Some(Kind::Leader))
+                    .or_else(|| live(world, Some(Kind::Body)))
+                    .unwrap_or(Entity::PLACEHOLDER);
+                let (weight, radius) =
+                    draw(world, |random| (maybe_extreme(random), scalar(random)));
+                CameraTarget::new(entity)
+                    .with_weight(weight)
+                    .with_radius(radius)
+            })
+            .collect();
+        let (perspective, fixed, spring) = draw(world, |random| {
+            (random.chance(0.4), random.chance(0.3), spring(random))
+        });
+        let projection = if perspective {
+            Projection::Perspective(default())
+        } else {
+            Projection::Orthographic(OrthographicProjection::default_2d())
+        };
+        let targets = CameraTargets::new(targets);
+        let targets = if fixed {
+            targets.moving_in_fixed_update()
+        } else {
+            targets
+        };
+        let rig = world
+            .spawn((
+                projection,
+                CameraRig::new(spring).with_offset(Vec3::new(0.0, 2.0, 10.0)),
+                targets,
+            ))
+            .id();
+        world.resource_mut::<Chaos>().entities.push(rig);
+        note(world, rig, "spawned, a camera rig");
+        for _ in 0..draw(world, |random| random.below(4)) {
+            camera_part(world, rig);
+        }
+        return;
+    }
+    let rig = draw(world, |random| random.pick(&rigs));
+    camera_part(world, rig);
+}
+
+/// One part of `rig` added, changed or removed, or its goal or zoom written (now and then not
+/// finite).
+fn camera_part(world: &mut World, rig: Entity) {
+    let (part, add, a, b, spring) = draw(world, |random| {
+        (
+            random.below(11),
+            random.chance(0.7),
+            maybe_extreme(random),
+            scalar(random),
+            spring(random),
+        )
+    });
+    note(
+        world,
+        rig,
+        format_args!("camera part {part}, add {add}, {a}, {b}"),
+    );
+    let mut entity = world.entity_mut(rig);
+    match (part, add) {
+        (0, true) => drop(entity.insert(LookAhead::new(b.abs() / 100.0).with_spring(spring))),
+        (1, true) => drop(entity.insert(DeadZone::view(Vec2::new(b.abs() / 1000.0, 0.1)))),
+        (2, true) => drop(entity.insert(ScreenPosition(Vec2::new(0.0, a / 1000.0)))),
+        (3, true) => drop(
+            entity.insert(
+                Confiner::new(Rect::new(-b.abs(), -b.abs(), b.abs() + 1.0, b.abs() + 1.0))
+                    .with_slowing_distance(a.abs()),
+            ),
+        ),
+        (4, true) => drop(entity.insert(GroupFraming::new(a / 100.0))),
+        (5, true) => drop(
+            entity.insert(
+                OrbitRig::new(b.abs() + 1.0)
+                    .with_angles(a, b)
+                    .with_spring(spring),
+            ),
+        ),
+        (6, true) => drop(
+            entity.insert(
+                ConfinerVolume::new(Vec3::splat(-b.abs()), Vec3::splat(b.abs()))
+                    .with_slowing_distance(1.0),
+            ),
+        ),
+        (7, _) => {
+            if let Some(mut rig) = entity.get_mut::<CameraRig>() {
+                rig.hold_vertical = add;
+                rig.zoom = a;
+            }
+        }
+        (8, _) => {
+            if let Some(mut goal) = entity.get_mut::<CameraGoal>() {
+                goal.point = Vec3::new(a, b, a);
+            }
+        }
+        (9, _) => {
+            if let Some(mut orbit) = entity.get_mut::<OrbitRig>() {
+                orbit.rotate(Vec2::new(a, b));
+                orbit.zoom_by(b);
+            }
+        }
+        (10, _) => drop(entity.remove::<CameraTargets>()),
+        (0, false) => drop(entity.remove::<LookAhead>()),
+        (1, false) => drop(entity.remove::<DeadZone>()),
+        (2, false) => drop(entity.remove::<ScreenPosition>()),
+        (3, false) => drop(entity.remove::<Confiner>()),
+        (4, false) => drop(entity.remove::<GroupFraming>()),
+        (5, false) => drop(entity.remove::<OrbitRig>()),
+        _ => drop(entity.remove::<ConfinerVolume>()),
+    }
+}
+
+/// A live rig made a shot of some priority (or no longer one), and a rendering camera that
+/// blends between shots spawned if there is none.
+fn camera_shots(world: &mut World) {
+    let rigs: Vec<Entity> = world
+        .query_filtered::<Entity, With<CameraRig>>()
+        .iter(world)
+        .collect();
+    if rigs.is_empty() {
+        return;
+    }
+    let (rig, priority, shot) = draw(world, |random| {
+        (random.pick(&rigs), random.below(5), random.chance(0.8))
+    });
+    note(world, rig, format_args!("shot {shot}, priority {priority}"));
+    if shot {
+        #[expect(
+            clippy::cast_possible_wrap,
+            clippy::cast_possible_truncation,
+            reason = "below 5"
+        )]
+        world
+            .entity_mut(rig)
+            .insert(VirtualCamera::new(priority as i32));
+    } else {
+        world.entity_mut(rig).remove::<VirtualCamera>();
+    }
+    if world
+        .query_filtered::<(), With<CameraBlend>>()
+        .iter(world)
+        .next()
+        .is_none()
+    {
+        let spring = draw(world, spring);
+        let camera = world
+            .spawn((Projection::Perspective(default()), CameraBlend::new(spring)))
+            .id();
+        world.resource_mut::<Chaos>().entities.push(camera);
+        note(world, camera, "spawned, a blending camera");
+    }
+}
+
+/// The window resized (the rigs' views change under them).
+fn resize_window(world: &mut World) {
+    let (width, height) = draw(world, |random| {
+        (1.0 + 2000.0 * random.unit(), 1.0 + 2000.0 * random.unit())
+    });
+    for mut window in world.query::<&mut Window>().iter_mut(world) {
+        window.resolution.set(width, height);
+    }
 }
 
 /// A few targets, on settle and timed, delayed (one of them extreme); or removed.
@@ -1062,6 +1245,14 @@ fn chaos_app(seed: u64, plugin: SpringPlugin) -> App {
         chaos.events.push("group settled");
     });
     let world = app.world_mut();
+    world.spawn((
+        Window {
+            resolution: bevy::window::WindowResolution::new(800, 600)
+                .with_scale_factor_override(1.0),
+            ..default()
+        },
+        bevy::window::PrimaryWindow,
+    ));
     for kind in [Kind::Parent, Kind::Leader, Kind::Leader] {
         spawn(world, kind);
     }
@@ -1117,6 +1308,7 @@ fn chaotic_frame(app: &mut App) {
 /// and every settle event with a sleep.
 fn check_frame(world: &mut World) {
     for_each_property!(check_values(world));
+    check_cameras(world);
     let mut chaos = world.resource_mut::<Chaos>();
     let fell_asleep = core::mem::take(&mut chaos.fell_asleep);
     let reported = core::mem::take(&mut chaos.reported);
@@ -1141,6 +1333,31 @@ fn check_frame(world: &mut World) {
         }
     }
     chaos.frame += 1;
+}
+
+/// Every camera a rig or a blend places is finite, and so is its lens.
+fn check_cameras(world: &mut World) {
+    let mut cameras = world.query_filtered::<(Entity, &Transform, Option<&Projection>), Or<(With<CameraRig>, With<CameraBlend>)>>();
+    let broken: Vec<Entity> = cameras
+        .iter(world)
+        .filter(|(_, transform, projection)| {
+            let lens = match projection {
+                Some(Projection::Orthographic(orthographic)) => orthographic.scale,
+                Some(Projection::Perspective(perspective)) => perspective.fov,
+                _ => 1.0,
+            };
+            !(transform.translation.is_finite()
+                && transform.rotation.is_finite()
+                && lens.is_finite())
+        })
+        .map(|(entity, ..)| entity)
+        .collect();
+    let mut chaos = world.resource_mut::<Chaos>();
+    for entity in broken {
+        chaos.violation(format!(
+            "camera {entity} placed at a non-finite pose or lens"
+        ));
+    }
 }
 
 /// Every value of property `P` is finite, but where the chaos itself wrote a non-finite one that
@@ -1275,7 +1492,15 @@ fn all_asleep(world: &mut World) -> bool {
         BackgroundColor,
         NodeSize,
         UiTransformRotation,
-        UiTransformTranslation
+        UiTransformTranslation,
+        RigHorizontal,
+        RigVertical,
+        RigZoom,
+        RigLookAhead,
+        RigOrbit,
+        BlendTranslation,
+        BlendRotation,
+        BlendLens
     );
     awake == 0
 }
@@ -1341,6 +1566,20 @@ fn run_chaos(seed: u64, fixed: bool) {
     assert!(
         springs > 3,
         "seed {seed:#x}: only {springs} springs at the end"
+    );
+    // The cameras came to rest too.
+    let mut rigs = world.query_filtered::<Entity, (
+        With<RigHorizontalSpring>,
+        Without<SpringAsleep<RigHorizontal>>,
+    )>();
+    let restless: Vec<Entity> = rigs.iter(world).collect();
+    assert!(
+        restless.is_empty(),
+        "seed {seed:#x}: camera rigs still moving after the calm: {restless:?}\n{}",
+        restless
+            .first()
+            .map(|entity| world.resource::<Chaos>().story(&entity.to_string()))
+            .unwrap_or_default()
     );
     let chaos = world.resource::<Chaos>();
     assert!(

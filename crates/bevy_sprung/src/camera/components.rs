@@ -2,6 +2,8 @@
 
 use alloc::vec::Vec;
 
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 use sprung::Spring;
 
@@ -57,6 +59,7 @@ use crate::spring::PropertySpring;
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, PartialEq)]
+#[component(on_remove = stop_rig)]
 #[require(
     Transform,
     CameraGoal,
@@ -89,6 +92,26 @@ pub struct CameraRig {
     pub hold_vertical: bool,
     /// Turn the camera to look at the point it frames (3D).
     pub look_at_goal: bool,
+}
+
+/// The hook of a [`CameraRig`] removed: its springs stay (they were required) but nothing
+/// retargets them any more, so their goals stop moving and they come to rest where they aim.
+fn stop_rig(mut world: DeferredWorld, context: HookContext) {
+    if let Some(mut spring) = world.get_mut::<RigHorizontalSpring>(context.entity)
+        && spring.target_velocity() != Vec2::ZERO
+    {
+        spring.set_target_velocity(Vec2::ZERO);
+    }
+    if let Some(mut spring) = world.get_mut::<RigVerticalSpring>(context.entity)
+        && spring.target_velocity() != 0.0
+    {
+        spring.set_target_velocity(0.0);
+    }
+    if let Some(mut spring) = world.get_mut::<RigZoomSpring>(context.entity)
+        && spring.target_velocity() != 0.0
+    {
+        spring.set_target_velocity(0.0);
+    }
 }
 
 impl Default for CameraRig {

@@ -41,7 +41,7 @@ pub(super) fn sample_fixed_targets(
 /// that move in `FixedUpdate` are where their fixed steps put them now (see
 /// [`TargetMotion::FixedTimestep`]).
 pub(super) fn sample_targets(
-    mut rigs: Query<(Entity, &CameraTargets, &Transform, &mut CameraGoal)>,
+    mut rigs: Query<(Entity, &CameraTargets, Option<&Transform>, &mut CameraGoal)>,
     transforms: Query<(&Transform, Option<&ChildOf>)>,
     globals: Query<&GlobalTransform>,
     fixed_time: Res<Time<Fixed>>,
@@ -77,7 +77,7 @@ pub(super) fn sample_targets(
             continue;
         }
         // The spread along the camera's own right and up axes, radii included.
-        let to_view = transform.rotation.inverse();
+        let to_view = transform.map_or(Quat::IDENTITY, |transform| transform.rotation.inverse());
         let spread = found().fold(Vec2::ZERO, |spread, (position, target)| {
             let local = to_view * (position - point);
             spread.max(local.truncate().abs() + Vec2::splat(target.radius.max(0.0)))
@@ -236,7 +236,7 @@ pub(super) fn track_goals(
 pub(super) struct Framed {
     rig: &'static CameraRig,
     goal: &'static CameraGoal,
-    transform: &'static Transform,
+    transform: Option<&'static Transform>,
     motion: &'static mut RigMotion,
     tracking: &'static mut RigTracking,
     horizontal: &'static mut RigHorizontalSpring,
@@ -283,7 +283,9 @@ pub(super) fn frame_goals(
         let shift = rig.screen.map_or(Vec3::ZERO, |screen| {
             let rotation = match rig.orbit {
                 Some(_) => orbit_rotation(rig.motion.orbit().x, rig.motion.orbit().y),
-                None => rig.transform.rotation,
+                None => rig
+                    .transform
+                    .map_or(Quat::IDENTITY, |transform| transform.rotation),
             };
             rotation * (screen.0 * 2.0 * half_view).extend(0.0)
         });
@@ -440,11 +442,18 @@ impl PosedItem<'_, '_> {
 /// After the springs stepped: the camera's translation and rotation, written only where they
 /// change. An occluder's pull (the clearance) shortens the arm.
 pub(super) fn compose_cameras(
-    mut rigs: Query<(Posed, &RigMotion, &mut Transform)>,
+    mut rigs: Query<(Entity, Posed, &RigMotion, Option<&mut Transform>)>,
     window: Query<&Window, With<PrimaryWindow>>,
 ) {
     let window = window.single().ok();
-    for (posed, motion, mut transform) in &mut rigs {
+    for (rig, posed, motion, transform) in &mut rigs {
+        let Some(mut transform) = transform else {
+            warn_once!(
+                "bevy_sprung: {rig} has a CameraRig but no Transform (removed?): the rig has \
+                 nothing to place; keep the Transform, or remove the CameraRig"
+            );
+            continue;
+        };
         let pose = posed.pose(motion, window);
         let translation = posed.place(&pose, motion.clearance());
         if !translation.is_finite() {
