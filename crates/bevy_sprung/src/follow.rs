@@ -214,9 +214,7 @@ fn follow_targets(
         let goal = position + follow.offset;
         // A non-finite target position is refused by the spring (with a warning).
         spring.set_target_if_neq(goal);
-        if spring.target_velocity() != velocity {
-            spring.set_target_velocity(velocity);
-        }
+        spring.set_target_velocity_if_neq(velocity);
     }
 }
 
@@ -250,9 +248,7 @@ pub(crate) fn fixed_sample(
 /// The spring's target stops moving (its target velocity is zeroed): it comes to rest on its
 /// target and sleeps. Only a moving target is touched, so a resting spring stays asleep.
 fn stop_target(spring: &mut Mut<TranslationSpring>) {
-    if spring.target_velocity() != Vec3::ZERO {
-        spring.set_target_velocity(Vec3::ZERO);
-    }
+    spring.set_target_velocity_if_neq(Vec3::ZERO);
 }
 
 /// The hook of a [`SpringFollow`] removed: the translation spring it moved no longer follows a

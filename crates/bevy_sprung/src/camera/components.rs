@@ -9,7 +9,7 @@ use sprung::Spring;
 
 use crate::follow::{FixedSamples, TargetMotion};
 use crate::space::Linear;
-use crate::spring::PropertySpring;
+use crate::spring::{PropertySpring, SpringTargetMut};
 
 /// A camera rig: the camera springs after a goal — the point it frames, made of
 /// [`CameraTargets`] (or a point you compute) and the optional parts [`LookAhead`],
@@ -97,20 +97,14 @@ pub struct CameraRig {
 /// The hook of a [`CameraRig`] removed: its springs stay (they were required) but nothing
 /// retargets them any more, so their goals stop moving and they come to rest where they aim.
 fn stop_rig(mut world: DeferredWorld, context: HookContext) {
-    if let Some(mut spring) = world.get_mut::<RigHorizontalSpring>(context.entity)
-        && spring.target_velocity() != Vec2::ZERO
-    {
-        spring.set_target_velocity(Vec2::ZERO);
+    if let Some(mut spring) = world.get_mut::<RigHorizontalSpring>(context.entity) {
+        spring.set_target_velocity_if_neq(Vec2::ZERO);
     }
-    if let Some(mut spring) = world.get_mut::<RigVerticalSpring>(context.entity)
-        && spring.target_velocity() != 0.0
-    {
-        spring.set_target_velocity(0.0);
+    if let Some(mut spring) = world.get_mut::<RigVerticalSpring>(context.entity) {
+        spring.set_target_velocity_if_neq(0.0);
     }
-    if let Some(mut spring) = world.get_mut::<RigZoomSpring>(context.entity)
-        && spring.target_velocity() != 0.0
-    {
-        spring.set_target_velocity(0.0);
+    if let Some(mut spring) = world.get_mut::<RigZoomSpring>(context.entity) {
+        spring.set_target_velocity_if_neq(0.0);
     }
 }
 

@@ -222,7 +222,8 @@ pub(super) fn track_goals(
             };
             rig.tracking.last_zoom = Some(zoom);
             rig.zoom.set_target_if_neq(zoom);
-            set_target_velocity_if_neq(&mut rig.zoom, if rate.is_finite() { rate } else { 0.0 });
+            rig.zoom
+                .set_target_velocity_if_neq(if rate.is_finite() { rate } else { 0.0 });
             if first_frame {
                 rig.motion.set_zoom(zoom);
             }
@@ -325,7 +326,8 @@ pub(super) fn frame_goals(
         }
         rig.horizontal
             .set_target_if_neq(Vec2::new(centre.x, centre.z));
-        set_target_velocity_if_neq(&mut rig.horizontal, Vec2::new(velocity.x, velocity.z));
+        rig.horizontal
+            .set_target_velocity_if_neq(Vec2::new(velocity.x, velocity.z));
 
         if rig.vertical.spring() != &rig.rig.vertical {
             let spring = rig.rig.vertical;
@@ -335,24 +337,11 @@ pub(super) fn frame_goals(
             // Held where it is: the spring comes to rest on its current height.
             let here = rig.motion.centre().y;
             rig.vertical.set_target_if_neq(here);
-            set_target_velocity_if_neq(&mut rig.vertical, 0.0);
+            rig.vertical.set_target_velocity_if_neq(0.0);
         } else {
             rig.vertical.set_target_if_neq(centre.y);
-            set_target_velocity_if_neq(&mut rig.vertical, velocity.y);
+            rig.vertical.set_target_velocity_if_neq(velocity.y);
         }
-    }
-}
-
-/// Sets a spring's target velocity only if it differs (a sleeping spring stays asleep).
-fn set_target_velocity_if_neq<P>(
-    spring: &mut Mut<crate::spring::PropertySpring<P>>,
-    velocity: crate::property::VelocityOf<P>,
-) where
-    P: crate::property::SpringProperty,
-    crate::property::VelocityOf<P>: PartialEq + Into<crate::property::OffsetOf<P>>,
-{
-    if spring.target_velocity() != velocity {
-        spring.set_target_velocity(velocity);
     }
 }
 

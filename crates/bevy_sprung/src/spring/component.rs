@@ -700,7 +700,8 @@ fn finite_velocity<V: SpringVector>(velocity: V, what: &str) -> Result<V, Spring
 /// any [`DetectChangesMut`]), [`set_target_if_neq`](Self::set_target_if_neq) retargets only
 /// when the target differs, and otherwise leaves the component untouched — not marked changed,
 /// so a sleeping spring stays asleep. It replaces the `if spring.target() != x` guard, as Bevy's
-/// `set_if_neq` does for whole components.
+/// `set_if_neq` does for whole components; [`set_target_velocity_if_neq`](Self::set_target_velocity_if_neq)
+/// does the same for a moving target's velocity.
 ///
 /// # Example
 /// ```
@@ -730,6 +731,14 @@ pub trait SpringTargetMut {
     /// target, and returns whether it did. A non-finite `target` is refused with one warning and
     /// returns `false`.
     fn set_target_if_neq(&mut self, target: Self::Value) -> bool;
+
+    /// The target velocity's type.
+    type Velocity;
+
+    /// Sets the target's velocity (as [`PropertySpring::set_target_velocity`]) if it differs
+    /// from the current one, and returns whether it did. A non-finite velocity is refused with
+    /// one warning and returns `false`.
+    fn set_target_velocity_if_neq(&mut self, velocity: Self::Velocity) -> bool;
 }
 
 impl<P, D> SpringTargetMut for D
@@ -751,6 +760,17 @@ where
         let spring: &mut PropertySpring<P> = self;
         spring.target = target;
         true
+    }
+
+    type Velocity = VelocityOf<P>;
+
+    #[inline]
+    fn set_target_velocity_if_neq(&mut self, velocity: VelocityOf<P>) -> bool {
+        if self.bypass_change_detection().target_velocity == velocity {
+            return false;
+        }
+        let spring: &mut PropertySpring<P> = self;
+        spring.try_set_target_velocity(velocity).is_ok()
     }
 }
 
