@@ -3,6 +3,7 @@
 use core::any::TypeId;
 
 use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::system::SystemParam;
 use bevy::ecs::world::DeferredWorld;
 use bevy::log::warn_once;
 use bevy::prelude::*;
@@ -136,33 +137,36 @@ impl SpringFollow {
     }
 }
 
-/// The world position of `entity`: its `Transform`, placed by its parent's `GlobalTransform`.
-pub(crate) fn world_position(
-    entity: Entity,
-    transforms: &Query<(&Transform, Option<&ChildOf>)>,
-    globals: &Query<&GlobalTransform>,
-) -> Option<Vec3> {
-    let (transform, parent) = transforms.get(entity).ok()?;
-    Some(
-        match parent.and_then(|parent| globals.get(parent.parent()).ok()) {
-            Some(parent) => parent.transform_point(transform.translation),
-            None => transform.translation,
-        },
-    )
+/// Where entities are in the world: an entity's `Transform`, placed by its parent's last
+/// `GlobalTransform` (this frame's `Transform` of the entity itself, so a target moved in
+/// `Update` is followed with no frame of lag).
+#[derive(SystemParam)]
+pub(crate) struct WorldPositions<'w, 's> {
+    transforms: Query<'w, 's, (&'static Transform, Option<&'static ChildOf>)>,
+    globals: Query<'w, 's, &'static GlobalTransform>,
+}
+
+impl WorldPositions<'_, '_> {
+    /// The world position of `entity`, if it has a `Transform`.
+    pub(crate) fn of(&self, entity: Entity) -> Option<Vec3> {
+        let (transform, parent) = self.transforms.get(entity).ok()?;
+        Some(
+            match parent.and_then(|parent| self.globals.get(parent.parent()).ok()) {
+                Some(parent) => parent.transform_point(transform.translation),
+                None => transform.translation,
+            },
+        )
+    }
 }
 
 /// After each fixed step: record where fixed-timestep targets are (a target gone forgets its
 /// samples, so that it is not followed along a stale velocity).
-fn sample_fixed_targets(
-    mut followers: Query<&mut SpringFollow>,
-    transforms: Query<(&Transform, Option<&ChildOf>)>,
-    globals: Query<&GlobalTransform>,
-) {
+fn sample_fixed_targets(mut followers: Query<&mut SpringFollow>, positions: WorldPositions) {
     for mut follow in &mut followers {
         if follow.motion != TargetMotion::FixedTimestep {
             continue;
         }
-        let position = world_position(follow.target, &transforms, &globals);
+        let position = positions.of(follow.target);
         follow.fixed.record(position);
     }
 }
@@ -174,8 +178,7 @@ fn follow_targets(
     time: SpringTime,
     fixed_time: Res<Time<Fixed>>,
     mut followers: Query<(Entity, &mut SpringFollow, &mut TranslationSpring)>,
-    transforms: Query<(&Transform, Option<&ChildOf>)>,
-    globals: Query<&GlobalTransform>,
+    positions: WorldPositions,
 ) {
     let steps = time.steps();
     for (follower, mut follow, mut spring) in &mut followers {
@@ -187,7 +190,7 @@ fn follow_targets(
         }
         let found = Some(follow.target)
             .filter(|&target| target != follower)
-            .and_then(|target| world_position(target, &transforms, &globals));
+            .and_then(|target| positions.of(target));
         let sample = match found {
             None => None,
             Some(position) => match follow.motion {

@@ -13,15 +13,11 @@ use super::components::{
 };
 use super::view::{centre_range, ease_into, goal_range, half_extents, viewport_size};
 use crate::clock::SpringTime;
-use crate::follow::{FixedSamples, TargetMotion, fixed_sample, world_position};
+use crate::follow::{FixedSamples, TargetMotion, WorldPositions, fixed_sample};
 use crate::spring::SpringTargetMut;
 
 /// After each fixed step: where the targets of rigs whose targets move in `FixedUpdate` are.
-pub(super) fn sample_fixed_targets(
-    mut rigs: Query<&mut CameraTargets>,
-    transforms: Query<(&Transform, Option<&ChildOf>)>,
-    globals: Query<&GlobalTransform>,
-) {
+pub(super) fn sample_fixed_targets(mut rigs: Query<&mut CameraTargets>, positions: WorldPositions) {
     for mut targets in &mut rigs {
         if targets.motion != TargetMotion::FixedTimestep {
             continue;
@@ -32,7 +28,7 @@ pub(super) fn sample_fixed_targets(
             .fixed
             .resize(targets.targets.len(), FixedSamples::default());
         for (target, samples) in targets.targets.iter().zip(&mut targets.fixed) {
-            samples.record(world_position(target.entity, &transforms, &globals));
+            samples.record(positions.of(target.entity));
         }
     }
 }
@@ -42,8 +38,7 @@ pub(super) fn sample_fixed_targets(
 /// [`TargetMotion::FixedTimestep`]).
 pub(super) fn sample_targets(
     mut rigs: Query<(Entity, &CameraTargets, Option<&Transform>, &mut CameraGoal)>,
-    transforms: Query<(&Transform, Option<&ChildOf>)>,
-    globals: Query<&GlobalTransform>,
+    positions: WorldPositions,
     fixed_time: Res<Time<Fixed>>,
 ) {
     for (rig, targets, transform, mut goal) in &mut rigs {
@@ -55,8 +50,7 @@ pub(super) fn sample_targets(
                 .filter_map(|(i, target)| {
                     let usable =
                         target.entity != rig && target.weight.is_finite() && target.weight > 0.0;
-                    let position =
-                        usable.then(|| world_position(target.entity, &transforms, &globals))??;
+                    let position = usable.then(|| positions.of(target.entity))??;
                     let position = match (targets.motion, targets.fixed.get(i)) {
                         (TargetMotion::FixedTimestep, Some(&samples)) => {
                             fixed_sample(samples, &fixed_time).map_or(position, |(now, _)| now)
