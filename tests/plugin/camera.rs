@@ -11,7 +11,7 @@ use bevy_sprung::camera::{CameraRigSystems, RigMotion};
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::SpringUpdate;
 
-use crate::harness::app;
+use crate::harness::{app, run_pattern};
 
 const RATES: [u32; 4] = [30, 60, 144, 240];
 
@@ -154,23 +154,13 @@ fn a_constant_velocity_target_is_followed_at_the_analytic_lag_plus_look_ahead() 
                 LookAhead::new(AHEAD),
             ))
             .id();
-        let mut elapsed = 0.0;
         let mut worst: f32 = 0.0;
-        for frame in 0.. {
-            let dt = pattern[frame % pattern.len()];
-            app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-                dt,
-            )));
-            app.update();
-            elapsed += dt;
-            if elapsed > 6.0 {
-                break;
-            }
+        run_pattern(&mut app, &pattern, 6.0, |app, elapsed| {
             if elapsed > 4.0 {
-                let offset = translation(&app, camera) - translation(&app, player);
+                let offset = translation(app, camera) - translation(app, player);
                 worst = worst.max(offset.distance(expected));
             }
-        }
+        });
         // Rounding at positions of a thousand pixels: a few thousandths of a pixel.
         assert!(
             worst < 5e-3,
@@ -994,24 +984,15 @@ fn targets_moving_in_fixed_update_are_followed_without_jitter_under_uneven_frame
             .world_mut()
             .spawn((CameraRig::new(spring), targets))
             .id();
-        let (mut elapsed, mut worst) = (0.0, 0.0_f32);
-        for frame in 0.. {
-            let dt = pattern[frame % pattern.len()];
-            app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-                dt,
-            )));
-            app.update();
-            elapsed += dt;
-            if elapsed > 4.0 {
-                break;
-            }
+        let mut worst = 0.0_f32;
+        run_pattern(&mut app, pattern, 4.0, |app, elapsed| {
             if elapsed > 2.5 {
                 // Against the target's continuous-time position, which the fixed steps sample.
                 let continuous = VELOCITY * app.world().resource::<Time<Virtual>>().elapsed_secs();
-                let offset = translation(&app, camera) - continuous;
+                let offset = translation(app, camera) - continuous;
                 worst = worst.max(offset.distance(lag));
             }
-        }
+        });
         worst
     };
     for pattern in patterns() {

@@ -1,13 +1,10 @@
 //! Camera smoothing: a follower over a target that moves in `FixedUpdate` at 64 Hz while frames
 //! come at uneven rates.
 
-use std::time::Duration;
-
 use bevy::prelude::*;
-use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
 
-use crate::harness::app;
+use crate::harness::{app, run_pattern};
 
 /// Frame-time patterns (seconds), cycled: steady, alternating, bursty, irregular.
 const PATTERNS: [&[f64]; 5] = [
@@ -59,16 +56,8 @@ fn camera_offsets(pattern: &[f64], motion: TargetMotion) -> (Vec<Vec3>, f32) {
         follow,
     ));
     let mut offsets = Vec::new();
-    let mut frame = 0;
-    while app.world().resource::<Time<Virtual>>().elapsed_secs_f64() < 4.0 {
-        let dt = pattern[frame % pattern.len()];
-        frame += 1;
-        app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-            dt,
-        )));
-        app.update();
-        let time = app.world().resource::<Time<Virtual>>();
-        let (t, seconds) = (time.elapsed_secs_f64(), time.elapsed_secs());
+    run_pattern(&mut app, pattern, 4.0, |app, t| {
+        let seconds = app.world().resource::<Time<Virtual>>().elapsed_secs();
         if t > 2.5 {
             let mut cameras = app
                 .world_mut()
@@ -77,7 +66,7 @@ fn camera_offsets(pattern: &[f64], motion: TargetMotion) -> (Vec<Vec3>, f32) {
             let target = SPEED * seconds;
             offsets.push(camera - target - OFFSET);
         }
-    }
+    });
     // The steady lag of a spring following a target moving at v is c·v/k, behind it.
     let lag = spring.damping() / spring.stiffness();
     (offsets, lag)

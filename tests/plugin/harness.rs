@@ -27,6 +27,28 @@ pub(crate) fn frame(fps: u32) -> Duration {
     Duration::from_secs_f64(1.0 / f64::from(fps))
 }
 
+/// Runs frames whose times cycle through `pattern` (seconds) until `seconds` of game time have
+/// passed, calling `each` after every frame with the game time elapsed.
+pub(crate) fn run_pattern(
+    app: &mut App,
+    pattern: &[f64],
+    seconds: f64,
+    mut each: impl FnMut(&mut App, f64),
+) {
+    let elapsed = |app: &App| app.world().resource::<Time<Virtual>>().elapsed_secs_f64();
+    for &dt in pattern.iter().cycle() {
+        if elapsed(app) >= seconds {
+            break;
+        }
+        app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+            dt,
+        )));
+        app.update();
+        let now = elapsed(app);
+        each(app, now);
+    }
+}
+
 /// Runs `frames` updates.
 pub(crate) fn run(app: &mut App, frames: u32) {
     for _ in 0..frames {
