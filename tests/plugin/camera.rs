@@ -1,5 +1,5 @@
 //! Camera rigs: dead zone, look-ahead and the steady lag, the confiner, group framing, orbit,
-//! and a goal of the app's own, at 30, 60, 144 and 240 fps.
+//! and a goal of the app's own, at 30, 60, 144, 240 and 360 fps.
 
 use std::time::Duration;
 
@@ -13,7 +13,7 @@ use bevy_sprung::spring::SpringUpdate;
 
 use crate::harness::{app, run_pattern};
 
-const RATES: [u32; 4] = [30, 60, 144, 240];
+const RATES: [u32; 5] = [30, 60, 144, 240, 360];
 
 /// The confiner test's zoom changes: (second, zoom).
 const ZOOMS: [(u32, f32); 3] = [(2, 1.8), (3, 0.6), (4, 1.0)];
@@ -1043,4 +1043,46 @@ fn a_rig_removed_or_stripped_mid_motion_comes_to_rest() {
     // Without its Transform, a rig still follows its target (with nothing to place).
     let motion = world.get::<RigMotion>(stripped).unwrap();
     assert!(motion.centre().is_finite() && motion.centre().x > 1000.0);
+}
+
+#[test]
+fn a_rig_far_from_the_origin_follows_at_the_lag_f32_resolves() {
+    // A big world: a target a million units out, running at 300 units/s, through a dead zone
+    // and a confiner, with a 1 s hitch.
+    const START: Vec3 = Vec3::new(1.0e6, -2.0e5, 0.0);
+    const VELOCITY: Vec3 = Vec3::new(300.0, 0.0, 0.0);
+    let spring = Spring::from_natural_frequency(4.0, 1.0).unwrap();
+    for fps in RATES {
+        let (mut app, player) = camera_app(fps, (800, 600), |t| START + VELOCITY * t);
+        let camera = app
+            .world_mut()
+            .spawn((
+                camera_2d(CameraRig::new(spring)),
+                CameraTargets::single(player),
+                DeadZone::world(Vec2::new(40.0, 40.0)),
+                Confiner::new(Rect::new(0.0, -1.0e6, 2.0e6, 1.0e6)).with_slowing_distance(100.0),
+            ))
+            .id();
+        for frame in 0..fps * 6 {
+            let hitch = frame == fps * 2;
+            if hitch {
+                app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs(1)));
+            }
+            app.update();
+            if hitch {
+                app.insert_resource(TimeUpdateStrategy::ManualDuration(crate::harness::frame(
+                    fps,
+                )));
+            }
+            assert!(translation(&app, camera).is_finite());
+        }
+        // Behind the target by the lag plus the dead zone's half width, to what f32 resolves a
+        // million out (0.0625).
+        let behind = translation(&app, player).x - translation(&app, camera).x;
+        let expected = VELOCITY.x * spring.damping() / spring.stiffness() + 20.0;
+        assert!(
+            (behind - expected).abs() < 0.5,
+            "{fps} fps: {behind} vs {expected}"
+        );
+    }
 }
