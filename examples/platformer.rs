@@ -92,11 +92,14 @@ fn setup(mut commands: Commands) {
         sky,
         Transform::from_translation(LEVEL.center().extend(-10.0)),
     ));
+    // The ground fills the level from its floor up to `GROUND`.
+    let depth = GROUND - LEVEL.min.y;
     let ground = Sprite::from_color(
         Color::srgb(0.36, 0.52, 0.3),
-        Vec2::new(LEVEL.width(), 200.0),
+        Vec2::new(LEVEL.width(), depth),
     );
-    commands.spawn((ground, Transform::from_xyz(LEVEL.center().x, -200.0, -5.0)));
+    let ground_centre = Vec3::new(LEVEL.center().x, GROUND - depth / 2.0, -5.0);
+    commands.spawn((ground, Transform::from_translation(ground_centre)));
     for i in 0..20 {
         let x = LEVEL.min.x + 100.0 + 200.0 * i as f32;
         let shade = if i % 2 == 0 { 0.7 } else { 0.76 };
