@@ -22,6 +22,7 @@ mod follow;
 mod interaction;
 mod juice;
 mod motion;
+mod presence;
 mod properties;
 mod scheduling;
 mod serde;

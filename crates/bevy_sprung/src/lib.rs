@@ -89,6 +89,7 @@ pub mod follow;
 pub mod interaction;
 pub mod juice;
 mod plugin;
+pub mod presence;
 mod property_plugin;
 pub mod reduced_motion;
 pub mod space;
@@ -164,6 +165,9 @@ pub mod prelude {
         SpringDrag,
     };
     pub use crate::juice::{Conserve, Shake, SquashStretch};
+    pub use crate::presence::{
+        EnterFrom, Entered, ExitTo, Exited, Presence, PresenceCommands, PresencePhase,
+    };
     pub use crate::property::SpringProperty;
     pub use crate::reduced_motion::{KeepMotion, ReducedMotion};
     #[cfg(feature = "color")]

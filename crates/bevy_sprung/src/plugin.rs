@@ -8,6 +8,7 @@ use crate::choreography::ChoreographyPlugin;
 use crate::clock::{SpringClock, SpringClockPlugin};
 use crate::follow::FollowPlugin;
 use crate::juice::JuicePlugin;
+use crate::presence::PresencePlugin;
 use crate::reduced_motion::ReducedMotionPlugin;
 use crate::spin::SpinPlugin;
 use crate::spring::SpringSchedulePlugin;
@@ -149,6 +150,7 @@ impl Plugin for SpringPlugin {
             ReducedMotionPlugin,
             ChoreographyPlugin,
             JuicePlugin,
+            PresencePlugin,
         ));
         #[cfg(feature = "color")]
         app.add_plugins(crate::color::ColorSpringPlugin);

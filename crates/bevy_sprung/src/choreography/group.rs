@@ -123,6 +123,15 @@ fn leave_group(mut world: DeferredWorld, context: HookContext) {
     }
 }
 
+/// Makes the grouped `entity` report [`AllSpringsSettled`] once none of its springs moves (this
+/// frame, if none does): for features that start something on an entity and wait for its
+/// springs, whether or not any of them moves.
+pub(crate) fn report_when_settled(world: &mut World, entity: Entity) {
+    if let Some(mut tracker) = world.get_resource_mut::<SettleTracker>() {
+        tracker.in_motion.insert(entity);
+    }
+}
+
 /// Whether any grouped entity is in motion or left its group in motion: the run condition of
 /// [`announce_settled`].
 pub(super) fn has_news(tracker: Option<Res<SettleTracker>>) -> bool {

@@ -10,6 +10,7 @@ mod group;
 mod sequence;
 mod systems;
 
+pub(crate) use group::report_when_settled;
 pub use group::{AllSpringsSettled, SpringGroup, SpringGroupSettled};
 pub use sequence::{
     Advance, LoopMode, OnInterrupt, Repeat, SequencePhase, SequenceStep, SpringSequence,

@@ -1,0 +1,352 @@
+//! Presence: entities that spring in when they appear and spring out before they go — Motion's
+//! `AnimatePresence`, SwiftUI's insertion and removal transitions.
+//!
+//! An entity with [`Presence`] enters from the values its [`EnterFrom<P>`] components give (its
+//! springs carry each property to its target), and leaves through
+//! [`despawn_after_exit`](PresenceCommands::despawn_after_exit): each spring with an
+//! [`ExitTo<P>`] retargets to its exit value, and once every spring of the entity has settled,
+//! [`Exited`] is triggered and the entity is despawned with its descendants.
+//! [`cancel_exit`](PresenceCommands::cancel_exit) turns it back on the way out, its springs
+//! keeping their velocities. Entities without a `Presence` pay nothing for any of this.
+
+use core::fmt;
+
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::system::EntityCommands;
+use bevy::ecs::world::DeferredWorld;
+use bevy::prelude::*;
+
+use crate::choreography::{AllSpringsSettled, SpringGroup, report_when_settled};
+use crate::property::{SpringProperty, ValueOf};
+use crate::spring::{PropertySpring, SpringTargetMut, trigger_if_alive};
+
+/// Makes an entity's arrival and departure spring: it enters from its [`EnterFrom<P>`] values,
+/// and [`despawn_after_exit`](PresenceCommands::despawn_after_exit) springs it to its
+/// [`ExitTo<P>`] values and despawns it (with its descendants) once they have settled.
+///
+/// [`Entered`] is triggered when the entrance has settled, [`Exited`] just before the entity
+/// is despawned (it is still there for the observer). The settling is what
+/// [`SpringGroup`] reports: the entity gets a `SpringGroup` for its own springs if it has none.
+///
+/// What the world may do meanwhile is defined: an exit requested twice is one exit; an exit
+/// cancelled ([`cancel_exit`](PresenceCommands::cancel_exit)) turns every spring back to the
+/// target it had, keeping its velocity, and the next settle is an [`Entered`]; an entity
+/// despawned another way mid-exit (directly, or with its parent) just goes, with no event; an
+/// exit that has nothing to move (no [`ExitTo`], or every spring already at its exit value)
+/// completes in the frame it was asked in, and an entrance with nothing to move is reported in
+/// the frame the entity was spawned in.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// #[derive(Component)]
+/// struct Toast;
+///
+/// fn show_toast(mut commands: Commands) {
+///     commands.spawn((
+///         Toast,
+///         Node::default(),
+///         Presence::default(),
+///         // Slides up 40 px and pops from 80 % while it enters, and leaves the same way.
+///         UiTransformTranslationSpring::new(Spring::snappy(), Val2::ZERO),
+///         EnterFrom::<UiTransformTranslation>(Val2::px(0.0, 40.0)),
+///         ExitTo::<UiTransformTranslation>(Val2::px(0.0, 40.0)),
+///         UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ONE),
+///         EnterFrom::<UiTransformScale>(Vec2::splat(0.8)),
+///         ExitTo::<UiTransformScale>(Vec2::splat(0.8)),
+///     ));
+/// }
+///
+/// fn dismiss(toasts: Query<Entity, With<Toast>>, mut commands: Commands) {
+///     for toast in &toasts {
+///         // Slides out, then is despawned; asking again while it leaves changes nothing.
+///         commands.entity(toast).despawn_after_exit();
+///     }
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// #     .add_systems(Startup, show_toast)
+/// #     .add_systems(Update, dismiss);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
+#[require(SpringGroup)]
+#[reflect(Component, Debug, Default, Clone, PartialEq)]
+#[component(on_add = Self::on_add)]
+pub struct Presence {
+    phase: PresencePhase,
+}
+
+impl Presence {
+    /// The hook: the entrance is reported when the entity's springs have settled, also if none
+    /// of them moves.
+    fn on_add(mut world: DeferredWorld, context: HookContext) {
+        world
+            .commands()
+            .queue(move |world: &mut World| report_when_settled(world, context.entity));
+    }
+
+    /// Where the entity is in its life.
+    #[inline]
+    #[must_use]
+    pub fn phase(&self) -> PresencePhase {
+        self.phase
+    }
+
+    /// Whether it is on its way out (an exit requested and not cancelled).
+    #[inline]
+    #[must_use]
+    pub fn is_exiting(&self) -> bool {
+        self.phase == PresencePhase::Exiting
+    }
+}
+
+/// Where an entity with [`Presence`] is in its life.
+#[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq, Hash)]
+#[reflect(Debug, Default, Clone, PartialEq)]
+pub enum PresencePhase {
+    /// Spawned (or turned back from an exit), its springs not yet settled.
+    #[default]
+    Entering,
+    /// Entered: its springs settled since it was spawned or turned back.
+    Present,
+    /// On its way out: it is despawned when its springs have settled.
+    Exiting,
+}
+
+/// The value property `P` starts from when the entity is spawned (or this component is
+/// inserted): its spring carries it from there to its target. The entrance of an entity with
+/// [`Presence`].
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn spawn_card(mut commands: Commands) {
+///     // Grows from nothing to full size with a bounce.
+///     commands.spawn((
+///         Transform::default(),
+///         Presence::default(),
+///         ScaleSpring::new(Spring::bouncy(), Vec3::ONE),
+///         EnterFrom::<Scale>(Vec3::ZERO),
+///     ));
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn_card);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect)]
+#[component(on_insert = Self::on_insert)]
+#[reflect(Component, Debug, Clone)]
+pub struct EnterFrom<P: SpringProperty>(pub ValueOf<P>);
+
+impl<P: SpringProperty> EnterFrom<P> {
+    /// The hook: the property takes the starting value (its spring, which follows what else
+    /// writes its property, springs from there). A value that is not finite is refused.
+    fn on_insert(mut world: DeferredWorld, context: HookContext) {
+        let Some(&Self(value)) = world.get::<Self>(context.entity) else {
+            return;
+        };
+        if !<P::Space as crate::space::SpringSpace>::is_valid(value) {
+            warn_once!("bevy_sprung: refused a non-finite entering value {value:?}");
+            return;
+        }
+        if let Some(mut component) = world.get_mut::<P::Component>(context.entity) {
+            P::set(&mut component, value);
+        }
+    }
+}
+
+/// The value property `P`'s spring heads for when the entity leaves
+/// ([`despawn_after_exit`](PresenceCommands::despawn_after_exit)); the target it had is kept and
+/// restored if the exit is cancelled. See [`Presence`].
+#[derive(Component, Reflect)]
+#[require(HeldTarget<P>)]
+#[reflect(Component, Debug, Clone)]
+pub struct ExitTo<P: SpringProperty>(pub ValueOf<P>);
+
+/// The target property `P`'s spring had when an exit began, restored if it is cancelled.
+#[derive(Component)]
+struct HeldTarget<P: SpringProperty>(Option<ValueOf<P>>);
+
+impl<P: SpringProperty> Default for HeldTarget<P> {
+    fn default() -> Self {
+        Self(None)
+    }
+}
+
+impl<P: SpringProperty> Clone for EnterFrom<P> {
+    fn clone(&self) -> Self {
+        Self(self.0)
+    }
+}
+
+impl<P: SpringProperty> fmt::Debug for EnterFrom<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "EnterFrom<{}>({:?})", P::short_type_path(), self.0)
+    }
+}
+
+impl<P: SpringProperty> Clone for ExitTo<P> {
+    fn clone(&self) -> Self {
+        Self(self.0)
+    }
+}
+
+impl<P: SpringProperty> fmt::Debug for ExitTo<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "ExitTo<{}>({:?})", P::short_type_path(), self.0)
+    }
+}
+
+/// Triggered on an entity with [`Presence`] when its entrance has settled (after it was
+/// spawned, or turned back from an exit).
+#[derive(EntityEvent, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Entered {
+    /// The entity that entered.
+    pub entity: Entity,
+}
+
+/// Triggered on an entity with [`Presence`] when its exit has settled, just before it is
+/// despawned: observers still find it and its components.
+#[derive(EntityEvent, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Exited {
+    /// The entity that is leaving.
+    pub entity: Entity,
+}
+
+/// An exit begun or cancelled: each property's observer turns its spring.
+#[derive(EntityEvent, Debug, Clone, Copy)]
+struct Turn {
+    entity: Entity,
+    /// Out (an exit) or back (a cancel).
+    exiting: bool,
+}
+
+/// Exits on `EntityCommands`: `commands.entity(toast).despawn_after_exit()`.
+pub trait PresenceCommands {
+    /// Springs the entity to its [`ExitTo`] values and despawns it, with its descendants,
+    /// once its springs have settled ([`Exited`] is triggered first). Asked again while it
+    /// leaves, nothing changes. An entity without [`Presence`] is despawned at once, and one
+    /// already gone is ignored.
+    fn despawn_after_exit(&mut self) -> &mut Self;
+
+    /// Turns a leaving entity back: its springs retarget to the targets they had before the
+    /// exit, keeping their velocities, and it is no longer despawned. [`Entered`] follows when
+    /// they settle. Does nothing to an entity that is not leaving.
+    fn cancel_exit(&mut self) -> &mut Self;
+}
+
+impl PresenceCommands for EntityCommands<'_> {
+    fn despawn_after_exit(&mut self) -> &mut Self {
+        self.queue_silenced(|entity: EntityWorldMut| turn(entity, true))
+    }
+
+    fn cancel_exit(&mut self) -> &mut Self {
+        self.queue_silenced(|entity: EntityWorldMut| turn(entity, false))
+    }
+}
+
+/// Starts an exit (`exiting`) or cancels one: every property's spring turns (in the observers
+/// of [`Turn`]), and the entity reports when they have settled.
+fn turn(mut entity: EntityWorldMut, exiting: bool) {
+    let id = entity.id();
+    let Some(mut presence) = entity.get_mut::<Presence>() else {
+        if exiting {
+            entity.despawn();
+        }
+        return;
+    };
+    if presence.is_exiting() == exiting {
+        return;
+    }
+    presence.phase = if exiting {
+        PresencePhase::Exiting
+    } else {
+        PresencePhase::Entering
+    };
+    entity.world_scope(|world| {
+        world.trigger(Turn {
+            entity: id,
+            exiting,
+        });
+        report_when_settled(world, id);
+    });
+}
+
+/// Property `P`'s part of a turn: its spring heads for the exit value (keeping the target it
+/// had), or back to that target.
+fn turn_property<P: SpringProperty>(
+    turn: On<Turn>,
+    mut springs: Query<(&mut PropertySpring<P>, &ExitTo<P>, &mut HeldTarget<P>)>,
+) {
+    let Ok((mut spring, exit, mut held)) = springs.get_mut(turn.entity) else {
+        return;
+    };
+    let target = if turn.exiting {
+        held.0 = Some(spring.target());
+        exit.0
+    } else {
+        match held.0.take() {
+            Some(present) => present,
+            None => return,
+        }
+    };
+    spring.set_target_if_neq(target);
+}
+
+/// Every spring of an entity with [`Presence`] settled: it has entered, or it has left and is
+/// despawned.
+fn settled(
+    settled: On<AllSpringsSettled>,
+    mut presences: Query<&mut Presence>,
+    mut commands: Commands,
+) {
+    let entity = settled.entity;
+    let Ok(mut presence) = presences.get_mut(entity) else {
+        return;
+    };
+    match presence.phase {
+        PresencePhase::Entering => {
+            presence.phase = PresencePhase::Present;
+            trigger_if_alive(&mut commands, Entered { entity });
+        }
+        PresencePhase::Present => {}
+        PresencePhase::Exiting => {
+            trigger_if_alive(&mut commands, Exited { entity });
+            commands.queue(move |world: &mut World| {
+                // An observer of `Exited` may have despawned it, or cancelled the exit.
+                if world
+                    .get::<Presence>(entity)
+                    .is_some_and(Presence::is_exiting)
+                {
+                    world.despawn(entity);
+                }
+            });
+        }
+    }
+}
+
+/// Presence (part of [`SpringPlugin`](crate::SpringPlugin)): entities with [`Presence`] report
+/// when they have entered, and leave once their exit has settled.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct PresencePlugin;
+
+impl Plugin for PresencePlugin {
+    fn build(&self, app: &mut App) {
+        app.register_type::<Presence>()
+            .register_type::<PresencePhase>()
+            .add_observer(settled);
+    }
+}
+
+/// What [`SpringPropertyPlugin<P>`](crate::SpringPropertyPlugin) adds of presence: an
+/// entity's [`ExitTo<P>`] is headed for when it leaves.
+pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
+    app.register_type::<EnterFrom<P>>()
+        .register_type::<ExitTo<P>>()
+        .add_observer(turn_property::<P>);
+}
