@@ -21,6 +21,7 @@ mod first_hour;
 mod follow;
 mod interaction;
 mod juice;
+mod layout;
 mod motion;
 mod presence;
 mod properties;

@@ -189,10 +189,10 @@ pub mod prelude {
     };
     #[cfg(feature = "ui")]
     pub use crate::ui::{
-        NodeBottom, NodeBottomSpring, NodeHeight, NodeHeightSpring, NodeLeft, NodeLeftSpring,
-        NodePosition, NodePositionSpring, NodeRight, NodeRightSpring, NodeSize, NodeSizeSpring,
-        NodeTop, NodeTopSpring, NodeWidth, NodeWidthSpring, UiTransformRotation,
-        UiTransformRotationSpring, UiTransformScale, UiTransformScaleSpring,
+        LayoutOffset, LayoutSpring, NodeBottom, NodeBottomSpring, NodeHeight, NodeHeightSpring,
+        NodeLeft, NodeLeftSpring, NodePosition, NodePositionSpring, NodeRight, NodeRightSpring,
+        NodeSize, NodeSizeSpring, NodeTop, NodeTopSpring, NodeWidth, NodeWidthSpring,
+        UiTransformRotation, UiTransformRotationSpring, UiTransformScale, UiTransformScaleSpring,
         UiTransformTranslation, UiTransformTranslationSpring,
     };
     #[cfg(feature = "ui")]

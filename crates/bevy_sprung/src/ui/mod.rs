@@ -5,11 +5,22 @@
 //! `left: Val::Percent(10.0)` sprung to `Val::Percent(50.0)` slides to 50 %). Targets are
 //! `Val`s, so a spring toward `px(200.0)` writes pixels.
 
+mod layout;
+
+pub use layout::{
+    LayoutOffset, LayoutScale, LayoutScaleSpring, LayoutSpring, LayoutTranslation,
+    LayoutTranslationSpring,
+};
+
+use core::any::TypeId;
+
 use bevy::prelude::*;
+use bevy::ui::UiSystems;
+use bevy::ui::update::update_clipping_system;
 
 use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Length, Length2, Linear, NeverThroughZero, ShortestAngle};
-use crate::spring::PropertySpring;
+use crate::spring::{PropertySpring, add_systems_on_first_use};
 
 spring_property!(
     /// `UiTransform::translation`, each axis a [`Length`]: moves a node without relayout (a
@@ -106,7 +117,8 @@ pub type UiScaleSpring = UiTransformScaleSpring;
 pub type UiRotationSpring = UiTransformRotationSpring;
 
 /// Springs UI geometry: `UiTransform` translation, scale and rotation and `Node` sizes and
-/// offsets (part of [`SpringPlugin`](crate::SpringPlugin) with feature `ui`; UI colours are in
+/// offsets, and layout transitions ([`LayoutSpring`]) (part of
+/// [`SpringPlugin`](crate::SpringPlugin) with feature `ui`; UI colours are in
 /// [`ColorSpringPlugin`](crate::color::ColorSpringPlugin)).
 #[derive(Debug, Default, Clone, Copy)]
 pub struct UiSpringPlugin;
@@ -125,7 +137,27 @@ impl Plugin for UiSpringPlugin {
             SpringPropertyPlugin::<NodeTop>::default(),
             SpringPropertyPlugin::<NodeRight>::default(),
             SpringPropertyPlugin::<NodeBottom>::default(),
-        ));
+            SpringPropertyPlugin::<LayoutTranslation>::default(),
+            SpringPropertyPlugin::<LayoutScale>::default(),
+        ))
+        .register_type::<LayoutSpring>()
+        .register_type::<LayoutOffset>();
+        // With the first layout spring: after layout placed the nodes, and before the clipping
+        // rectangles are computed from where they are drawn.
+        add_systems_on_first_use(
+            app,
+            &[TypeId::of::<LayoutSpring>()],
+            PostUpdate,
+            |schedule| {
+                schedule.add_systems(
+                    (layout::note_reflows, layout::draw_offsets)
+                        .chain()
+                        .in_set(UiSystems::PostLayout)
+                        .before(update_clipping_system)
+                        .run_if(any_with_component::<LayoutSpring>),
+                );
+            },
+        );
         #[cfg(feature = "asset")]
         {
             use crate::asset::SequenceAssetPlugin;

@@ -1,0 +1,392 @@
+//! Layout transitions (FLIP): a node springs from where it was drawn to where `bevy_ui`'s
+//! layout puts it now.
+//!
+//! First, Last, Invert, Play: after layout has placed a node, compare its box with the one
+//! layout gave it last frame; add the difference to a visual offset ([`LayoutOffset`]) so that
+//! the node is drawn where it was, then spring the offset to nothing. Layout itself is never
+//! fought: `Node`, `Children` and `UiTransform` stay as the app wrote them, and only the drawn
+//! transforms ([`UiGlobalTransform`]) carry the offset.
+
+use alloc::vec::Vec;
+
+use bevy::prelude::*;
+use bevy::ui::{ComputedUiRenderTargetInfo, IgnoreScroll, UiGlobalTransform};
+use sprung::{RestThreshold, Spring};
+
+use crate::space::Linear;
+use crate::spring::PropertySpring;
+
+/// Makes a UI node spring to its new place when layout moves or resizes it: a reorder of its
+/// parent's `Children`, a sibling inserted or removed, a change of its `Node` or its content, a
+/// window resize. The node is drawn where it was and springs to where layout puts it — its
+/// position, and with [`size`](Self::size) its size — keeping its velocity when layout moves it
+/// again mid-flight.
+///
+/// Its place is its box in its parent, as layout computes it (its own `UiTransform` and the
+/// parent's scrolling are not part of it): a node carried along by its parent moves with it. Put
+/// a `LayoutSpring` on the parent too to spring the parent's moves. The offset is drawn, not
+/// laid out: the node's `Node`, its `UiTransform` (springs on it add on top) and what picking
+/// and focus see next frame are where layout put it, and its descendants move with it. A size
+/// change is drawn as a scale of the node's own box (background, border, its own text), while
+/// its children keep their size and move with the scaled box.
+///
+/// Once the node has arrived its springs sleep, and a node whose layout does not change costs a
+/// change-detection test per frame.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// #[derive(Component)]
+/// struct List;
+///
+/// fn spawn_list(mut commands: Commands) {
+///     commands
+///         .spawn((List, Node { flex_direction: FlexDirection::Column, ..default() }))
+///         .with_children(|list| {
+///             for _ in 0..5 {
+///                 list.spawn((
+///                     Node { height: px(40.0), ..default() },
+///                     LayoutSpring::new(Spring::snappy()),
+///                 ));
+///             }
+///         });
+/// }
+///
+/// // The last item moves to the top, and every item springs to its new place.
+/// fn last_to_top(lists: Query<(Entity, &Children), With<List>>, mut commands: Commands) {
+///     for (list, items) in &lists {
+///         if let Some(&last) = items.last() {
+///             commands.entity(list).insert_child(0, last);
+///         }
+///     }
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// #     .add_systems(Startup, spawn_list)
+/// #     .add_systems(Update, last_to_top);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
+#[component(on_add = crate::spring::first_use::<LayoutSpring>)]
+#[require(
+    Node,
+    LayoutOffset,
+    LaidOut,
+    LayoutTranslationSpring = PropertySpring::new(Spring::snappy(), Vec2::ZERO),
+    LayoutScaleSpring = PropertySpring::new(Spring::snappy(), Vec2::ZERO)
+)]
+#[reflect(Component, Debug, Clone, PartialEq)]
+pub struct LayoutSpring {
+    /// The spring of the move (and of the size).
+    pub spring: Spring,
+    /// Spring size changes too (drawn as a scale), not only moves.
+    pub size: bool,
+}
+
+impl LayoutSpring {
+    /// Springs moves and size changes with `spring`.
+    #[must_use]
+    pub fn new(spring: Spring) -> Self {
+        Self { spring, size: true }
+    }
+
+    /// Springs moves only: a size change is drawn at once.
+    #[must_use]
+    pub fn position_only(spring: Spring) -> Self {
+        Self {
+            spring,
+            size: false,
+        }
+    }
+}
+
+impl Default for LayoutSpring {
+    fn default() -> Self {
+        Self::new(Spring::snappy())
+    }
+}
+
+/// How far a [`LayoutSpring`] node is drawn from where layout puts it: the offset of its centre
+/// in its parent's frame, in physical pixels, and its drawn size as a factor `exp(log_scale)` of
+/// its laid-out size (logarithms, so that a bounce never draws it at a negative size). Its
+/// springs carry both to zero; the plugin writes it, and draws it after layout.
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq, Default)]
+#[reflect(Component, Debug, Default, Clone, PartialEq)]
+pub struct LayoutOffset {
+    /// The centre's offset, in the parent's frame, in physical pixels.
+    pub translation: Vec2,
+    /// The natural logarithm of the drawn size over the laid-out size, per axis.
+    pub log_scale: Vec2,
+}
+
+impl LayoutOffset {
+    /// No offset: drawn where layout puts it.
+    pub const ZERO: Self = Self {
+        translation: Vec2::ZERO,
+        log_scale: Vec2::ZERO,
+    };
+
+    /// The drawn size over the laid-out size, per axis.
+    #[inline]
+    #[must_use]
+    pub fn scale(&self) -> Vec2 {
+        Vec2::new(self.log_scale.x.exp(), self.log_scale.y.exp())
+    }
+}
+
+spring_property!(
+    /// A [`LayoutSpring`] node's drawn move, [`LayoutOffset::translation`], in physical pixels.
+    pub LayoutTranslation: LayoutOffset::translation as Linear<Vec2>,
+    rest: RestThreshold { offset: 0.05, speed: 0.5 }
+);
+
+spring_property!(
+    /// A [`LayoutSpring`] node's drawn size change, [`LayoutOffset::log_scale`].
+    pub LayoutScale: LayoutOffset::log_scale as Linear<Vec2>,
+    rest: RestThreshold { offset: 1e-4, speed: 1e-3 }
+);
+
+/// A spring on [`LayoutTranslation`], toward no offset.
+pub type LayoutTranslationSpring = PropertySpring<LayoutTranslation>;
+/// A spring on [`LayoutScale`], toward no offset.
+pub type LayoutScaleSpring = PropertySpring<LayoutScale>;
+
+/// Where layout put a [`LayoutSpring`] node last: its box in its parent.
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq, Default)]
+#[reflect(Component, Default)]
+pub(crate) struct LaidOut(Option<LayoutBox>);
+
+/// A node's box as layout computes it, in physical pixels: its centre relative to its parent's
+/// top-left corner (scrolling and its own `UiTransform` taken out), and its size.
+#[derive(Reflect, Debug, Clone, Copy, PartialEq)]
+struct LayoutBox {
+    centre: Vec2,
+    size: Vec2,
+    parent: Option<Entity>,
+}
+
+/// Layout moves below this (rounding in the transforms it is read back from) are not sprung.
+const SMALLEST_MOVE: f32 = 1e-3;
+
+impl LayoutBox {
+    /// The offset that draws a node laid out at `self` where it was drawn at `before` with
+    /// `offset`: the same centre and, with `size`, the same size.
+    fn offset_from(&self, before: &Self, offset: LayoutOffset, size: bool) -> LayoutOffset {
+        let moved = before.centre - self.centre;
+        let translation = if moved.abs().max_element() > SMALLEST_MOVE {
+            offset.translation + moved
+        } else {
+            offset.translation
+        };
+        let mut log_scale = offset.log_scale;
+        if size {
+            // Ratios of sizes, as logarithms: exact to rounding at any scale. An axis of no size
+            // (a collapsed node) has no ratio, and is drawn at once.
+            let grown = (before.size / self.size).to_array();
+            for (axis, ratio) in grown.into_iter().enumerate() {
+                let log = ratio.ln();
+                if log.is_finite() {
+                    log_scale[axis] += log;
+                }
+            }
+        }
+        LayoutOffset {
+            translation,
+            log_scale,
+        }
+    }
+}
+
+/// A node's layout box, read back from what layout computed: its drawn transform without its
+/// own `UiTransform` translation, in its parent's frame, with the parent's scrolling undone.
+struct LaidOutNode<'a> {
+    node: &'a ComputedNode,
+    global: &'a UiGlobalTransform,
+    transform: &'a UiTransform,
+    target: &'a ComputedUiRenderTargetInfo,
+    ignore_scroll: Option<&'a IgnoreScroll>,
+}
+
+impl LaidOutNode<'_> {
+    fn layout_box(&self, parent: Option<(Entity, &ComputedNode, &UiGlobalTransform)>) -> LayoutBox {
+        let own = self.transform.translation.resolve(
+            self.target.scale_factor(),
+            self.node.size,
+            self.target.physical_size().as_vec2(),
+        );
+        let (centre, parent) = match parent {
+            Some((entity, parent, parent_global)) => {
+                // Layout placed the centre at `location − scroll + (size − parent size) / 2` in
+                // the parent's frame, plus the node's own translation.
+                let local = parent_global.inverse() * **self.global;
+                let kept = self.ignore_scroll.map_or(Vec2::ONE, |ignore| {
+                    Vec2::select(ignore.0, Vec2::ZERO, Vec2::ONE)
+                });
+                let scroll = parent.scroll_position * kept;
+                (
+                    local.translation - own + scroll + 0.5 * parent.size,
+                    Some(entity),
+                )
+            }
+            None => (self.global.translation - own, None),
+        };
+        LayoutBox {
+            centre,
+            size: self.node.size,
+            parent,
+        }
+    }
+}
+
+/// After layout: each [`LayoutSpring`] node whose layout box changed is given the offset that
+/// draws it where it was; its springs carry it from there (keeping their velocities).
+pub(super) fn note_reflows(
+    mut nodes: Query<
+        (
+            Ref<LayoutSpring>,
+            &mut LaidOut,
+            &mut LayoutOffset,
+            &mut LayoutTranslationSpring,
+            &mut LayoutScaleSpring,
+            (
+                &ComputedNode,
+                &UiGlobalTransform,
+                &UiTransform,
+                &ComputedUiRenderTargetInfo,
+                Option<&IgnoreScroll>,
+                Option<&ChildOf>,
+            ),
+        ),
+        Or<(
+            Changed<UiGlobalTransform>,
+            Changed<ComputedNode>,
+            Changed<LayoutSpring>,
+        )>,
+    >,
+    parents: Query<(&ComputedNode, &UiGlobalTransform)>,
+) {
+    for (config, mut laid_out, mut offset, mut translation, mut scale, node) in &mut nodes {
+        if config.is_changed() {
+            translation.set_spring(config.spring);
+            scale.set_spring(config.spring);
+        }
+        let (node, global, transform, target, ignore_scroll, child_of) = node;
+        let parent = child_of.and_then(|child_of| {
+            let parent = child_of.parent();
+            parents
+                .get(parent)
+                .ok()
+                .map(|(node, global)| (parent, node, global))
+        });
+        let now = LaidOutNode {
+            node,
+            global,
+            transform,
+            target,
+            ignore_scroll,
+        }
+        .layout_box(parent);
+        let before = laid_out.0.replace(now);
+        // First laid out, or moved to another parent: drawn where layout puts it.
+        let Some(before) = before.filter(|before| before.parent == now.parent) else {
+            continue;
+        };
+        if before == now {
+            continue;
+        }
+        let moved = now.offset_from(&before, *offset, config.size);
+        offset.set_if_neq(moved);
+    }
+}
+
+/// What drawing the offsets does to one node's transform.
+#[derive(Clone, Copy)]
+pub(super) enum Drawn {
+    /// The node and its descendants move by this, on screen.
+    Shift(Vec2),
+    /// The node's own box is drawn scaled by this (its children are shifted, not scaled).
+    Scale(Vec2),
+}
+
+/// After [`note_reflows`]: draws every offset. Each node with an offset, and its descendants,
+/// move by the offset (in its parent's frame); a node drawn at another size has its own box
+/// scaled, and its children keep their size and move as the scaled box places them.
+pub(super) fn draw_offsets(
+    mut queries: ParamSet<(
+        Query<
+            (Entity, &LayoutOffset, Option<&ChildOf>),
+            Or<(Changed<LayoutOffset>, Changed<UiGlobalTransform>)>,
+        >,
+        Query<&mut UiGlobalTransform>,
+    )>,
+    descendants: Query<&Children>,
+    mut offsets: Local<Vec<(Entity, LayoutOffset, Option<Entity>)>>,
+    mut drawn: Local<Vec<(Entity, Drawn)>>,
+    mut stack: Local<Vec<Entity>>,
+) {
+    offsets.clear();
+    drawn.clear();
+    for (entity, offset, child_of) in &queries.p0() {
+        if *offset != LayoutOffset::ZERO {
+            offsets.push((entity, *offset, child_of.map(ChildOf::parent)));
+        }
+    }
+    if offsets.is_empty() {
+        return;
+    }
+    // Read from the transforms layout computed, before any is drawn.
+    let globals = queries.p1();
+    for &(entity, offset, parent) in &*offsets {
+        let Ok(global) = globals.get(entity) else {
+            continue;
+        };
+        let parent_frame = parent
+            .and_then(|parent| globals.get(parent).ok())
+            .map_or(Mat2::IDENTITY, |parent| parent.matrix2);
+        drawn.push((entity, Drawn::Shift(parent_frame * offset.translation)));
+        let scale = offset.scale();
+        if scale == Vec2::ONE {
+            continue;
+        }
+        drawn.push((entity, Drawn::Scale(scale)));
+        let children = descendants
+            .get(entity)
+            .map_or(&[][..], |children| &**children);
+        for &child in children {
+            let Ok(child_global) = globals.get(child) else {
+                continue;
+            };
+            let from_centre = (global.inverse() * **child_global).translation;
+            let moved = global.matrix2 * ((scale - Vec2::ONE) * from_centre);
+            drawn.push((child, Drawn::Shift(moved)));
+        }
+    }
+    let mut globals = queries.p1();
+    for &(entity, change) in &*drawn {
+        match change {
+            Drawn::Scale(scale) => {
+                if let Ok(mut global) = globals.get_mut(entity) {
+                    let mut affine = **global;
+                    affine.matrix2 *= Mat2::from_diagonal(scale);
+                    *global = affine.into();
+                }
+            }
+            Drawn::Shift(by) => {
+                stack.clear();
+                stack.push(entity);
+                while let Some(node) = stack.pop() {
+                    if let Ok(mut global) = globals.get_mut(node) {
+                        let mut affine = **global;
+                        affine.translation += by;
+                        *global = affine.into();
+                    }
+                    if let Ok(children) = descendants.get(node) {
+                        stack.extend(children.iter());
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,385 @@
+//! Layout transitions (FLIP) with `bevy_ui`'s layout running: continuous across reflows, exact
+//! arrival, velocity kept through a second reflow, nodes that do not move never written.
+
+use bevy::app::{HierarchyPropagatePlugin, PropagateSet};
+use bevy::camera::{ComputedCameraValues, RenderTargetInfo, Viewport};
+use bevy::prelude::*;
+use bevy::ui::update::propagate_ui_target_cameras;
+use bevy::ui::{
+    ComputedUiRenderTargetInfo, ComputedUiTargetCamera, UiGlobalTransform, UiScale, UiSystems,
+    ui_layout_system,
+};
+use bevy_sprung::prelude::*;
+use bevy_sprung::ui::{LayoutScale, LayoutTranslation};
+
+use crate::harness::{app, asleep, run};
+
+const WIDTH: u32 = 800;
+const HEIGHT: u32 = 600;
+
+/// A headless app at `fps` with `bevy_ui`'s layout, as `UiPlugin` schedules it, on an 800×600
+/// target.
+fn ui_app(fps: u32) -> App {
+    let mut app = app(fps);
+    app.add_plugins((
+        HierarchyPropagatePlugin::<ComputedUiTargetCamera>::new(PostUpdate),
+        HierarchyPropagatePlugin::<ComputedUiRenderTargetInfo>::new(PostUpdate),
+    ))
+    .init_resource::<UiScale>()
+    .init_resource::<bevy::ui::ui_surface::UiSurface>()
+    .init_resource::<bevy::text::FontCx>()
+    .configure_sets(
+        PostUpdate,
+        (
+            UiSystems::Prepare.after(bevy::app::AnimationSystems),
+            UiSystems::Propagate,
+            UiSystems::Content,
+            UiSystems::Layout,
+            UiSystems::PostLayout,
+        )
+            .chain(),
+    )
+    .configure_sets(
+        PostUpdate,
+        (
+            PropagateSet::<ComputedUiTargetCamera>::default().in_set(UiSystems::Propagate),
+            PropagateSet::<ComputedUiRenderTargetInfo>::default().in_set(UiSystems::Propagate),
+        ),
+    )
+    .add_systems(
+        PostUpdate,
+        (
+            propagate_ui_target_cameras.in_set(UiSystems::Prepare),
+            ui_layout_system.in_set(UiSystems::Layout),
+        ),
+    );
+    app.world_mut().spawn((
+        Camera2d,
+        Camera {
+            computed: ComputedCameraValues {
+                target_info: Some(RenderTargetInfo {
+                    physical_size: UVec2::new(WIDTH, HEIGHT),
+                    scale_factor: 1.0,
+                }),
+                ..default()
+            },
+            viewport: Some(Viewport {
+                physical_size: UVec2::new(WIDTH, HEIGHT),
+                ..default()
+            }),
+            ..default()
+        },
+    ));
+    app
+}
+
+/// A column of `count` items 40 px high, each with a layout spring, and the column.
+fn spawn_column(app: &mut App, count: usize, spring: Spring) -> (Entity, Vec<Entity>) {
+    let column = app
+        .world_mut()
+        .spawn(Node {
+            flex_direction: FlexDirection::Column,
+            width: px(200.0),
+            ..default()
+        })
+        .id();
+    let items = (0..count)
+        .map(|_| {
+            app.world_mut()
+                .spawn((
+                    Node {
+                        height: px(40.0),
+                        flex_shrink: 0.0,
+                        ..default()
+                    },
+                    LayoutSpring::new(spring),
+                    ChildOf(column),
+                ))
+                .id()
+        })
+        .collect();
+    (column, items)
+}
+
+/// Where the node is drawn: its centre on screen.
+fn drawn(app: &App, entity: Entity) -> Vec2 {
+    app.world()
+        .get::<UiGlobalTransform>(entity)
+        .unwrap()
+        .translation
+}
+
+/// The centre of the `index`th 40 px item of a column at the top left.
+fn slot(index: usize) -> Vec2 {
+    Vec2::new(100.0, 20.0 + 40.0 * index as f32)
+}
+
+/// Moves the column's last item to the top.
+fn last_to_top(app: &mut App, column: Entity) {
+    let last = *app.world().get::<Children>(column).unwrap().last().unwrap();
+    app.world_mut().entity_mut(column).insert_child(0, last);
+}
+
+/// The last item moves to the top: every item is drawn continuously from its old slot to its
+/// new one, each frame moving by no more than the spring's own step, and ends exactly there.
+#[test]
+fn a_reorder_springs_every_item_to_its_new_place() {
+    for fps in [30, 60, 144, 240] {
+        let mut app = ui_app(fps);
+        let spring = Spring::smooth();
+        let (column, items) = spawn_column(&mut app, 5, spring);
+        run(&mut app, 3);
+        for (index, &item) in items.iter().enumerate() {
+            assert_eq!(drawn(&app, item), slot(index), "{fps} fps");
+        }
+        last_to_top(&mut app, column);
+        let before: Vec<Vec2> = items.iter().map(|&item| drawn(&app, item)).collect();
+        app.update();
+        // The frame of the reorder: drawn where they were.
+        for (index, &item) in items.iter().enumerate() {
+            assert_eq!(drawn(&app, item), before[index], "{fps} fps: jumped");
+        }
+        // Then along the exact motion of the spring from the old slot: one dimension, from
+        // rest, so every frame is the exact state at its time (to the rest tolerance, 0.05 px,
+        // once it has arrived).
+        let dt = 1.0 / f64::from(fps);
+        for frame in 1..=2 * fps {
+            app.update();
+            let time = dt * f64::from(frame);
+            for (index, &item) in items.iter().enumerate() {
+                let to = (index + 1) % items.len();
+                let from = slot(index).y;
+                let exact = sprung::Spring::<f64>::from(spring)
+                    .transition(time)
+                    .step(
+                        sprung::SpringState::new(f64::from(from - slot(to).y), 0.0),
+                        0.0,
+                    )
+                    .position
+                    + f64::from(slot(to).y);
+                let y = f64::from(drawn(&app, item).y);
+                assert!(
+                    (y - exact).abs() < 0.05,
+                    "{fps} fps, item {index}, frame {frame}: {y} vs {exact}"
+                );
+                assert_eq!(drawn(&app, item).x, 100.0);
+            }
+        }
+        run(&mut app, fps);
+        for (index, &item) in items.iter().enumerate() {
+            let to = (index + 1) % items.len();
+            assert_eq!(drawn(&app, item), slot(to), "{fps} fps");
+            assert_eq!(
+                *app.world().get::<LayoutOffset>(item).unwrap(),
+                LayoutOffset::ZERO
+            );
+            assert!(asleep::<LayoutTranslation>(&app, item));
+        }
+    }
+}
+
+/// A second reorder mid-flight keeps the velocity: the item moving to the top is sent back
+/// before it arrives, and its drawn path is the exact spring motion of one offset, rebased by
+/// the layout move with its velocity kept — not a restart from rest.
+#[test]
+fn a_second_reorder_mid_flight_keeps_velocity() {
+    for fps in [30, 60, 144, 240] {
+        let mut app = ui_app(fps);
+        let spring = Spring::snappy();
+        let (column, items) = spawn_column(&mut app, 5, spring);
+        run(&mut app, 3);
+        let item = items[4];
+        let transition = sprung::Spring::<f64>::from(spring).transition(1.0 / f64::from(fps));
+        // Drawn at slot 4 while laid out at slot 0: an offset of 160 px, at rest.
+        let mut state = sprung::SpringState::new(f64::from(slot(4).y - slot(0).y), 0.0);
+        last_to_top(&mut app, column);
+        app.update();
+        let mut laid_out = slot(0).y;
+        let back_at = fps / 5;
+        for frame in 1..=fps {
+            if frame == back_at {
+                app.world_mut().entity_mut(column).insert_child(4, item);
+            }
+            app.update();
+            state = transition.step(state, 0.0);
+            if frame == back_at {
+                // Layout moved it 160 px down: the offset takes that up, the velocity stays.
+                state.position -= f64::from(slot(4).y - slot(0).y);
+                laid_out = slot(4).y;
+                assert!(state.velocity < -100.0, "{fps} fps: {state:?}");
+            }
+            let expected = f64::from(laid_out) + state.position;
+            let y = f64::from(drawn(&app, item).y);
+            assert!(
+                (y - expected).abs() < 0.05,
+                "{fps} fps, frame {frame}: {y} vs {expected}"
+            );
+        }
+        run(&mut app, fps);
+        assert_eq!(drawn(&app, item), slot(4));
+    }
+}
+
+/// A node whose layout does not change is never written, nor are its springs woken, while its
+/// siblings move.
+#[test]
+fn a_node_whose_layout_does_not_change_is_never_written() {
+    let mut app = ui_app(60);
+    let (column, items) = spawn_column(&mut app, 3, Spring::snappy());
+    run(&mut app, 5);
+    let first = items[0];
+    let ticks = |app: &App| {
+        let entity = app.world().entity(first);
+        (
+            entity
+                .get_change_ticks::<UiGlobalTransform>()
+                .unwrap()
+                .changed,
+            entity.get_change_ticks::<LayoutOffset>().unwrap().changed,
+        )
+    };
+    let still = ticks(&app);
+    // The second and third trade places; the first stays.
+    app.world_mut()
+        .get_mut::<Children>(column)
+        .unwrap()
+        .swap(1, 2);
+    for _ in 0..120 {
+        app.update();
+        assert_eq!(ticks(&app), still);
+        assert!(asleep::<LayoutTranslation>(&app, first));
+    }
+    assert_eq!(drawn(&app, items[1]), slot(2));
+}
+
+/// A size change is drawn as a scale of the node's box that springs to 1; the children keep
+/// their size (their transform is not scaled) and their place in the drawn box, in proportion.
+#[test]
+fn a_size_change_springs_without_distorting_children() {
+    let mut app = ui_app(60);
+    let panel = app
+        .world_mut()
+        .spawn((
+            Node {
+                width: px(100.0),
+                height: px(100.0),
+                ..default()
+            },
+            LayoutSpring::new(Spring::smooth()),
+        ))
+        .id();
+    let child = app
+        .world_mut()
+        .spawn((
+            Node {
+                width: px(20.0),
+                height: px(20.0),
+                ..default()
+            },
+            ChildOf(panel),
+        ))
+        .id();
+    run(&mut app, 3);
+    app.world_mut().get_mut::<Node>(panel).unwrap().width = px(300.0);
+    app.update();
+    let global = |app: &App, entity| *app.world().get::<UiGlobalTransform>(entity).unwrap();
+    // Drawn at its old size and place: 100 px wide, centred at x = 50.
+    let drawn_panel = global(&app, panel);
+    assert!((drawn_panel.matrix2.x_axis.x * 300.0 - 100.0).abs() < 1e-3);
+    assert!((drawn_panel.translation.x - 50.0).abs() < 1e-3);
+    let mut last_width = 100.0;
+    for _ in 0..180 {
+        app.update();
+        let panel_now = global(&app, panel);
+        let width = panel_now.matrix2.x_axis.x * 300.0;
+        assert!(width >= last_width - 1e-3 && width <= 300.0 + 1e-3);
+        last_width = width;
+        // The child: never scaled, laid out 140 px left of the centre, which the drawn box
+        // scales.
+        let child_now = global(&app, child);
+        assert_eq!(child_now.matrix2, Mat2::IDENTITY);
+        let expected = panel_now.translation.x - 140.0 * width / 300.0;
+        assert!(
+            (child_now.translation.x - expected).abs() < 1e-2,
+            "child at {} instead of {expected}",
+            child_now.translation.x
+        );
+    }
+    assert_eq!(global(&app, panel).matrix2, Mat2::IDENTITY);
+    assert!(asleep::<LayoutScale>(&app, panel));
+}
+
+/// Scrolling is not a layout change: the items move with the scroll at once, their springs
+/// asleep.
+#[test]
+fn scrolling_moves_items_at_once() {
+    let mut app = ui_app(60);
+    let (column, items) = spawn_column(&mut app, 10, Spring::snappy());
+    {
+        let mut node = app.world_mut().get_mut::<Node>(column).unwrap();
+        node.height = px(120.0);
+        node.overflow = Overflow::scroll_y();
+    }
+    run(&mut app, 3);
+    for scrolled in [10.0, 35.0, 80.0] {
+        app.world_mut()
+            .entity_mut(column)
+            .insert(ScrollPosition(Vec2::new(0.0, scrolled)));
+        app.update();
+        for (index, &item) in items.iter().enumerate() {
+            assert_eq!(drawn(&app, item), slot(index) - Vec2::Y * scrolled);
+            assert!(asleep::<LayoutTranslation>(&app, item));
+        }
+    }
+}
+
+/// A window resize reflows a row of percentage-wide items: they spring to their new places and
+/// sizes from where they were drawn.
+#[test]
+fn a_window_resize_springs_to_the_new_layout() {
+    let mut app = ui_app(60);
+    let row = app
+        .world_mut()
+        .spawn(Node {
+            width: percent(100.0),
+            ..default()
+        })
+        .id();
+    let items: Vec<Entity> = (0..4)
+        .map(|_| {
+            app.world_mut()
+                .spawn((
+                    Node {
+                        width: percent(25.0),
+                        height: px(50.0),
+                        ..default()
+                    },
+                    LayoutSpring::new(Spring::smooth()),
+                    ChildOf(row),
+                ))
+                .id()
+        })
+        .collect();
+    run(&mut app, 3);
+    let before: Vec<Vec2> = items.iter().map(|&item| drawn(&app, item)).collect();
+    assert_eq!(before[3], Vec2::new(700.0, 25.0));
+    let mut cameras = app.world_mut().query::<&mut Camera>();
+    for mut camera in cameras.iter_mut(app.world_mut()) {
+        let size = UVec2::new(400, HEIGHT);
+        camera.computed.target_info.as_mut().unwrap().physical_size = size;
+        camera.viewport.as_mut().unwrap().physical_size = size;
+    }
+    app.update();
+    for (index, &item) in items.iter().enumerate() {
+        assert_eq!(drawn(&app, item), before[index], "item {index} jumped");
+    }
+    run(&mut app, 120);
+    for (index, &item) in items.iter().enumerate() {
+        assert_eq!(
+            drawn(&app, item),
+            Vec2::new(50.0 + 100.0 * index as f32, 25.0)
+        );
+        let global = app.world().get::<UiGlobalTransform>(item).unwrap();
+        assert_eq!(global.matrix2, Mat2::IDENTITY);
+    }
+}
