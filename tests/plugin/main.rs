@@ -19,6 +19,7 @@ mod clocks;
 mod disabling;
 mod first_hour;
 mod follow;
+mod implicit;
 mod interaction;
 mod juice;
 mod layout;

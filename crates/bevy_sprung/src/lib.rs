@@ -85,6 +85,7 @@ pub mod control;
 #[cfg(feature = "curve")]
 pub mod curve;
 pub mod follow;
+pub mod implicit;
 #[cfg(feature = "picking")]
 pub mod interaction;
 pub mod juice;
@@ -159,6 +160,7 @@ pub mod prelude {
     #[cfg(feature = "sprite")]
     pub use crate::color::{SpriteColor, SpriteColorSpring};
     pub use crate::follow::{SpringFollow, TargetMotion};
+    pub use crate::implicit::ImplicitSpring;
     #[cfg(feature = "picking")]
     pub use crate::interaction::{
         DragBounds, DragFollow, DragReleased, InteractionState, InteractionTargets, Snap, SnapLine,

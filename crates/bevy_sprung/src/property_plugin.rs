@@ -62,6 +62,7 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
         app.add_plugins(PropertyStepPlugin::<P>::default());
         crate::choreography::add_property::<P>(app);
         crate::presence::add_property::<P>(app);
+        crate::implicit::add_property::<P>(app);
         #[cfg(feature = "picking")]
         crate::interaction::add_property::<P>(app);
         #[cfg(feature = "asset")]

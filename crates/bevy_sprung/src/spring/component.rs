@@ -316,6 +316,18 @@ impl<P: SpringProperty> SpringMotion<P> {
         }
     }
 
+    /// The value this motion put on the property: the target it snapped to at rest, or what its
+    /// last step wrote ([`holds`](Self::holds) is true of it).
+    #[inline]
+    pub(crate) fn shown(&self) -> ValueOf<P> {
+        let zero = OffsetOf::<P>::ZERO;
+        if self.offset.offset == zero && self.offset.remainder == zero {
+            self.active_target
+        } else {
+            P::Space::at_carried(self.active_target, self.offset)
+        }
+    }
+
     /// The ticket of the spring's slot in its property's transition table; from
     /// [`TransitionTable::NO_TICKET`] up, it has none.
     #[inline]
