@@ -267,3 +267,166 @@ fn a_non_finite_start_is_refused() {
     run(&mut app, 120);
     assert_eq!(translation(&app, card), Vec3::ZERO);
 }
+
+/// A parent whose `count` children, each entering from scale 0, are staggered by `stagger`.
+fn spawn_staggered(app: &mut App, stagger: StaggerChildren, count: usize) -> (Entity, Vec<Entity>) {
+    let parent = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            stagger,
+            Presence::default(),
+            TranslationSpring::new(Spring::smooth(), Vec3::ZERO),
+            EnterFrom::<Translation>(Vec3::Y * -100.0),
+        ))
+        .id();
+    let children = (0..count)
+        .map(|index| spawn_child(app, parent, index))
+        .collect();
+    (parent, children)
+}
+
+fn spawn_child(app: &mut App, parent: Entity, index: usize) -> Entity {
+    app.world_mut()
+        .spawn((
+            Transform::from_xyz(index as f32 * 10.0, 0.0, 0.0),
+            Presence::default(),
+            ScaleSpring::new(Spring::smooth(), Vec3::ONE),
+            EnterFrom::<Scale>(Vec3::splat(1e-3)),
+            ChildOf(parent),
+        ))
+        .id()
+}
+
+fn scale(app: &App, entity: Entity) -> f32 {
+    app.world().get::<Transform>(entity).unwrap().scale.x
+}
+
+fn elapsed(app: &App) -> f64 {
+    app.world().resource::<Time<Virtual>>().elapsed_secs_f64()
+}
+
+/// The game time at which each entity first moved from where it entered from, running `frames`.
+fn start_times(app: &mut App, entities: &[Entity], frames: u32) -> Vec<Option<f64>> {
+    let mut started = vec![None; entities.len()];
+    for _ in 0..frames {
+        app.update();
+        for (index, &entity) in entities.iter().enumerate() {
+            if started[index].is_none() && scale(app, entity) != 1e-3 {
+                started[index] = Some(elapsed(app));
+            }
+        }
+    }
+    started
+}
+
+/// Children start `interval` apart in each order: each holds its entering value exactly until
+/// its turn, at every frame rate (a turn falls in the frame that reaches it).
+#[test]
+fn children_enter_one_after_another_in_each_order() {
+    let interval = 0.1;
+    let orders: [(StaggerOrder, [f64; 5]); 4] = [
+        (StaggerOrder::First, [0.0, 1.0, 2.0, 3.0, 4.0]),
+        (StaggerOrder::Last, [4.0, 3.0, 2.0, 1.0, 0.0]),
+        (StaggerOrder::Centre, [2.0, 1.0, 0.0, 1.0, 2.0]),
+        // Children at x = 0, 10, ..., 40: nearest to x = 31 first.
+        (
+            StaggerOrder::From(Vec3::X * 31.0),
+            [4.0, 3.0, 2.0, 0.0, 1.0],
+        ),
+    ];
+    for fps in [30, 60, 144, 240] {
+        for (order, ranks) in orders {
+            let mut app = app(fps);
+            let (_, children) =
+                spawn_staggered(&mut app, StaggerChildren::new(interval).from(order), 5);
+            // The first update has dt = 0: the clock starts after it.
+            app.update();
+            let origin = elapsed(&app);
+            let started = start_times(&mut app, &children, fps);
+            let frame = 1.0 / f64::from(fps);
+            for (index, rank) in ranks.iter().enumerate() {
+                let due = rank * f64::from(interval);
+                let at = started[index].expect("never started") - origin;
+                assert!(
+                    at >= due - 1e-6 && at < due + frame + 1e-6,
+                    "{fps} fps, {order:?}: child {index} started at {at}, due at {due}"
+                );
+            }
+        }
+    }
+}
+
+/// `BeforeChildren`: no child moves until the parent has entered. `AfterChildren`: the parent
+/// holds still until every child has entered.
+#[test]
+fn a_parent_enters_before_or_after_its_children() {
+    let mut app = app(60);
+    listen(&mut app);
+    let (parent, children) = spawn_staggered(
+        &mut app,
+        StaggerChildren::new(0.05).when(StaggerWhen::BeforeChildren),
+        3,
+    );
+    for _ in 0..240 {
+        app.update();
+        let parent_entered = heard(&app, parent) == ["entered"];
+        if !parent_entered {
+            for &child in &children {
+                assert_eq!(scale(&app, child), 1e-3, "a child moved first");
+            }
+        }
+    }
+    for &child in &children {
+        assert_eq!(heard(&app, child), ["entered"]);
+    }
+
+    let mut app = crate::harness::app(60);
+    listen(&mut app);
+    let (parent, children) = spawn_staggered(
+        &mut app,
+        StaggerChildren::new(0.05).when(StaggerWhen::AfterChildren),
+        3,
+    );
+    for _ in 0..300 {
+        app.update();
+        let all_entered = children
+            .iter()
+            .all(|&child| heard(&app, child) == ["entered"]);
+        if !all_entered {
+            assert_eq!(
+                translation(&app, parent).y,
+                -100.0,
+                "the parent moved first"
+            );
+        }
+    }
+    assert_eq!(translation(&app, parent).y, 0.0);
+    assert_eq!(heard(&app, parent), ["entered"]);
+}
+
+/// A child added while others wait starts after the last of them; a child asked to leave
+/// while it waits leaves at once from where it is, and is despawned.
+#[test]
+fn later_children_join_and_waiting_children_can_leave() {
+    let mut app = app(60);
+    listen(&mut app);
+    let (parent, children) = spawn_staggered(&mut app, StaggerChildren::new(0.2), 3);
+    app.update();
+    let origin = elapsed(&app);
+    run(&mut app, 3);
+    let late = spawn_child(&mut app, parent, 3);
+    // The third child waits for its turn at 0.4 s: it leaves instead.
+    exit(&mut app, children[2]);
+    let mut all = children.clone();
+    all.push(late);
+    let started = start_times(&mut app, &all, 120);
+    let late_start = started[3].unwrap() - origin;
+    assert!(
+        late_start >= 0.6 - 1e-6,
+        "the late child started at {late_start}"
+    );
+    // The leaving child never grew: it shrinks from where it was, which is where it is.
+    assert!(app.world().get_entity(children[2]).is_err());
+    assert_eq!(heard(&app, children[2]), ["exited"]);
+}

@@ -169,6 +169,7 @@ pub mod prelude {
     pub use crate::juice::{Conserve, Shake, SquashStretch};
     pub use crate::presence::{
         EnterFrom, Entered, ExitTo, Exited, Presence, PresenceCommands, PresencePhase,
+        StaggerChildren, StaggerOrder, StaggerWhen,
     };
     pub use crate::property::SpringProperty;
     pub use crate::reduced_motion::{KeepMotion, ReducedMotion};

@@ -1,13 +1,4 @@
-//! Presence: entities that spring in when they appear and spring out before they go — Motion's
-//! `AnimatePresence`, SwiftUI's insertion and removal transitions.
-//!
-//! An entity with [`Presence`] enters from the values its [`EnterFrom<P>`] components give (its
-//! springs carry each property to its target), and leaves through
-//! [`despawn_after_exit`](PresenceCommands::despawn_after_exit): each spring with an
-//! [`ExitTo<P>`] retargets to its exit value, and once every spring of the entity has settled,
-//! [`Exited`] is triggered and the entity is despawned with its descendants.
-//! [`cancel_exit`](PresenceCommands::cancel_exit) turns it back on the way out, its springs
-//! keeping their velocities. Entities without a `Presence` pay nothing for any of this.
+//! The life of an entity with [`Presence`]: its entrance, its exit, and the turns between them.
 
 use core::fmt;
 
@@ -140,6 +131,7 @@ pub enum PresencePhase {
 /// ```
 #[derive(Component, Reflect)]
 #[component(on_insert = Self::on_insert)]
+#[require(HeldTarget<P>)]
 #[reflect(Component, Debug, Clone)]
 pub struct EnterFrom<P: SpringProperty>(pub ValueOf<P>);
 
@@ -168,9 +160,10 @@ impl<P: SpringProperty> EnterFrom<P> {
 #[reflect(Component, Debug, Clone)]
 pub struct ExitTo<P: SpringProperty>(pub ValueOf<P>);
 
-/// The target property `P`'s spring had when an exit began, restored if it is cancelled.
+/// The target property `P`'s spring had when an exit began (restored if it is cancelled), or
+/// while its entrance waits (restored when it goes).
 #[derive(Component)]
-struct HeldTarget<P: SpringProperty>(Option<ValueOf<P>>);
+pub(super) struct HeldTarget<P: SpringProperty>(Option<ValueOf<P>>);
 
 impl<P: SpringProperty> Default for HeldTarget<P> {
     fn default() -> Self {
@@ -218,13 +211,31 @@ pub struct Exited {
     pub entity: Entity,
 }
 
-/// An exit begun or cancelled: each property's observer turns its spring.
+/// A turn in an entity's life: each property's observer turns its spring.
 #[derive(EntityEvent, Debug, Clone, Copy)]
-struct Turn {
-    entity: Entity,
-    /// Out (an exit) or back (a cancel).
-    exiting: bool,
+pub(super) struct Turn {
+    pub(super) entity: Entity,
+    pub(super) to: TurnTo,
 }
+
+/// Where a [`Turn`] takes the springs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum TurnTo {
+    /// Toward each [`ExitTo`] value, holding the target each had.
+    Exit,
+    /// Back to the targets held by an exit.
+    Back,
+    /// Waiting: each entering spring ([`EnterFrom`]) holds where its property is, keeping its
+    /// target for [`Go`](Self::Go).
+    Wait,
+    /// Entering after a wait: to the targets held by [`Wait`](Self::Wait).
+    Go,
+}
+
+/// Marks an entity whose entrance waits (a staggered child): its entering springs hold still
+/// until the wait is over.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+pub(super) struct Waiting;
 
 /// Exits on `EntityCommands`: `commands.entity(toast).despawn_after_exit()`.
 pub trait PresenceCommands {
@@ -268,44 +279,64 @@ fn turn(mut entity: EntityWorldMut, exiting: bool) {
     } else {
         PresencePhase::Entering
     };
+    // An entrance still waiting goes first, so that the exit starts from the springs' own
+    // targets.
+    let waited = entity.take::<Waiting>().is_some();
     entity.world_scope(|world| {
-        world.trigger(Turn {
-            entity: id,
-            exiting,
-        });
+        if waited {
+            world.trigger(Turn {
+                entity: id,
+                to: TurnTo::Go,
+            });
+        }
+        let to = if exiting { TurnTo::Exit } else { TurnTo::Back };
+        world.trigger(Turn { entity: id, to });
         report_when_settled(world, id);
     });
 }
 
-/// Property `P`'s part of a turn: its spring heads for the exit value (keeping the target it
-/// had), or back to that target.
-fn turn_property<P: SpringProperty>(
+/// Property `P`'s part of a turn: its spring heads for the exit value or holds where it is
+/// (keeping the target it had), or back to that target.
+pub(super) fn turn_property<P: SpringProperty>(
     turn: On<Turn>,
-    mut springs: Query<(&mut PropertySpring<P>, &ExitTo<P>, &mut HeldTarget<P>)>,
+    mut springs: Query<(
+        &mut PropertySpring<P>,
+        &P::Component,
+        &mut HeldTarget<P>,
+        Option<&ExitTo<P>>,
+        Has<EnterFrom<P>>,
+    )>,
 ) {
-    let Ok((mut spring, exit, mut held)) = springs.get_mut(turn.entity) else {
+    let Ok((mut spring, component, mut held, exit, entering)) = springs.get_mut(turn.entity) else {
         return;
     };
-    let target = if turn.exiting {
-        held.0 = Some(spring.target());
-        exit.0
-    } else {
-        match held.0.take() {
-            Some(present) => present,
-            None => return,
+    let target = match (turn.to, exit) {
+        (TurnTo::Exit, Some(exit)) => {
+            held.0 = Some(spring.target());
+            exit.0
         }
+        (TurnTo::Wait, _) if entering => {
+            held.0 = Some(spring.target());
+            P::get(component)
+        }
+        (TurnTo::Back | TurnTo::Go, _) => match held.0.take() {
+            Some(held) => held,
+            None => return,
+        },
+        _ => return,
     };
     spring.set_target_if_neq(target);
 }
 
 /// Every spring of an entity with [`Presence`] settled: it has entered, or it has left and is
 /// despawned.
-fn settled(
+pub(super) fn settled(
     settled: On<AllSpringsSettled>,
-    mut presences: Query<&mut Presence>,
+    mut presences: Query<&mut Presence, Without<Waiting>>,
     mut commands: Commands,
 ) {
     let entity = settled.entity;
+    // An entrance that waits has not entered: it reports once it went and settled.
     let Ok(mut presence) = presences.get_mut(entity) else {
         return;
     };
@@ -328,25 +359,4 @@ fn settled(
             });
         }
     }
-}
-
-/// Presence (part of [`SpringPlugin`](crate::SpringPlugin)): entities with [`Presence`] report
-/// when they have entered, and leave once their exit has settled.
-#[derive(Debug, Default, Clone, Copy)]
-pub struct PresencePlugin;
-
-impl Plugin for PresencePlugin {
-    fn build(&self, app: &mut App) {
-        app.register_type::<Presence>()
-            .register_type::<PresencePhase>()
-            .add_observer(settled);
-    }
-}
-
-/// What [`SpringPropertyPlugin<P>`](crate::SpringPropertyPlugin) adds of presence: an
-/// entity's [`ExitTo<P>`] is headed for when it leaves.
-pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
-    app.register_type::<EnterFrom<P>>()
-        .register_type::<ExitTo<P>>()
-        .add_observer(turn_property::<P>);
 }
