@@ -383,3 +383,171 @@ fn a_window_resize_springs_to_the_new_layout() {
         assert_eq!(global.matrix2, Mat2::IDENTITY);
     }
 }
+
+/// A scroll area 200 px high over 100 rows of 40 px (it scrolls to 3800), with `scroll`.
+fn spawn_scroll_area(app: &mut App, scroll: MomentumScroll) -> (Entity, Entity) {
+    let area = app
+        .world_mut()
+        .spawn((
+            Node {
+                width: px(200.0),
+                height: px(200.0),
+                flex_direction: FlexDirection::Column,
+                overflow: Overflow::scroll_y(),
+                ..default()
+            },
+            scroll,
+        ))
+        .id();
+    let rows: Vec<Entity> = (0..100)
+        .map(|_| {
+            app.world_mut()
+                .spawn((
+                    Node {
+                        height: px(40.0),
+                        flex_shrink: 0.0,
+                        ..default()
+                    },
+                    ChildOf(area),
+                ))
+                .id()
+        })
+        .collect();
+    (area, rows[0])
+}
+
+fn scroll_position(app: &App, area: Entity) -> f32 {
+    app.world().get::<ScrollPosition>(area).unwrap().y
+}
+
+fn steer(app: &mut App, area: Entity, input: impl FnOnce(&mut MomentumScroll)) {
+    input(&mut app.world_mut().get_mut::<MomentumScroll>(area).unwrap());
+}
+
+/// Counts `ScrollSettled` per area.
+#[derive(Resource, Default)]
+struct Settled(Vec<Entity>);
+
+/// A fling coasts as the closed form `x0 + v·(1 − e^(−d·t))/d`, at every frame rate, and rests
+/// exactly at `x0 + v/d`, reported once.
+#[test]
+fn a_fling_decays_exactly() {
+    for fps in [30, 60, 144, 240] {
+        let mut app = ui_app(fps);
+        app.init_resource::<Settled>().add_observer(
+            |settled: On<ScrollSettled>, mut all: ResMut<Settled>| {
+                all.0.push(settled.entity);
+            },
+        );
+        let deceleration = 2.0;
+        let (area, _) = spawn_scroll_area(
+            &mut app,
+            MomentumScroll::default().with_deceleration(deceleration),
+        );
+        run(&mut app, 3);
+        steer(&mut app, area, |scroll| scroll.drag_by(Vec2::Y * 1000.0));
+        app.update();
+        assert_eq!(scroll_position(&app, area), 1000.0);
+        let velocity = 800.0;
+        steer(&mut app, area, |scroll| scroll.fling(Vec2::Y * velocity));
+        app.world_mut().resource_mut::<Settled>().0.clear();
+        for frame in 1..=5 * fps {
+            app.update();
+            let t = f64::from(frame) / f64::from(fps);
+            let exact = 1000.0
+                + f64::from(velocity) * (1.0 - (-f64::from(deceleration) * t).exp())
+                    / f64::from(deceleration);
+            let shown = f64::from(scroll_position(&app, area));
+            assert!(
+                (shown - exact).abs() < 0.06,
+                "{fps} fps, frame {frame}: {shown} vs {exact}"
+            );
+        }
+        run(&mut app, 5 * fps);
+        assert_eq!(scroll_position(&app, area), 1400.0);
+        assert_eq!(app.world().resource::<Settled>().0, [area]);
+    }
+}
+
+/// A hard fling toward the end: the content is never drawn past the end by as much as the
+/// give, springs back, and rests exactly at the end.
+#[test]
+fn a_fling_past_the_end_stays_within_the_rubber_band() {
+    for fps in [30, 60, 240] {
+        let mut app = ui_app(fps);
+        let give = 120.0;
+        let (area, first_row) = spawn_scroll_area(&mut app, MomentumScroll::default());
+        run(&mut app, 3);
+        steer(&mut app, area, |scroll| scroll.drag_by(Vec2::Y * 3000.0));
+        app.update();
+        steer(&mut app, area, |scroll| scroll.fling(Vec2::Y * 20000.0));
+        let mut furthest: f32 = 0.0;
+        for _ in 0..4 * fps {
+            app.update();
+            let scrolled = scroll_position(&app, area);
+            assert!((0.0..=3800.0).contains(&scrolled));
+            // Past the end by what the first row is drawn above where the scroll puts it
+            // (layout scrolls by whole pixels).
+            let past = (20.0 - scrolled.floor()) - drawn(&app, first_row).y;
+            assert!(
+                past >= -1e-3 && past < give,
+                "{fps} fps: {past} past the end"
+            );
+            furthest = furthest.max(past);
+        }
+        assert!(furthest > 10.0, "{fps} fps: never pulled past the end");
+        assert_eq!(scroll_position(&app, area), 3800.0);
+        assert_eq!(drawn(&app, first_row).y, 20.0 - 3800.0);
+    }
+}
+
+/// Dragged past the start, the content follows less and less; let go, it springs back.
+#[test]
+fn a_drag_past_the_start_rubber_bands_and_springs_back() {
+    let mut app = ui_app(60);
+    let (area, first_row) = spawn_scroll_area(&mut app, MomentumScroll::default());
+    run(&mut app, 3);
+    let mut last = 0.0;
+    for _ in 0..30 {
+        steer(&mut app, area, |scroll| scroll.drag_by(Vec2::Y * -20.0));
+        app.update();
+        let pulled = drawn(&app, first_row).y - 20.0;
+        assert!(pulled > last && pulled < 120.0, "{pulled} after {last}");
+        assert!(pulled - last <= 20.0 * 0.55 + 1e-3);
+        last = pulled;
+    }
+    // Held still: it stays pulled.
+    run(&mut app, 10);
+    assert_eq!(drawn(&app, first_row).y - 20.0, last);
+    steer(&mut app, area, |scroll| scroll.fling(Vec2::ZERO));
+    run(&mut app, 180);
+    assert_eq!(drawn(&app, first_row).y, 20.0);
+    assert_eq!(scroll_position(&app, area), 0.0);
+}
+
+/// With snap points a fling rests on the one nearest its rest point; wheel steps glide there
+/// and add up.
+#[test]
+fn snapping_and_wheel_steps() {
+    let mut app = ui_app(60);
+    let (area, _) = spawn_scroll_area(
+        &mut app,
+        MomentumScroll::default().snap_every(Vec2::new(0.0, 40.0)),
+    );
+    run(&mut app, 3);
+    steer(&mut app, area, |scroll| scroll.fling(Vec2::Y * 555.0));
+    run(&mut app, 240);
+    // Rest point 277.5: the nearest row boundary is 280.
+    assert_eq!(scroll_position(&app, area), 280.0);
+    steer(&mut app, area, |scroll| scroll.scroll_by(Vec2::Y * 80.0));
+    app.update();
+    steer(&mut app, area, |scroll| scroll.scroll_by(Vec2::Y * 40.0));
+    let mut last = scroll_position(&app, area);
+    for _ in 0..120 {
+        app.update();
+        let now = scroll_position(&app, area);
+        assert!(now >= last && now <= 400.0);
+        last = now;
+    }
+    assert_eq!(last, 400.0);
+}

@@ -93,6 +93,7 @@ mod plugin;
 pub mod presence;
 mod property_plugin;
 pub mod reduced_motion;
+mod rubber_band;
 pub mod space;
 pub mod spin;
 pub mod spring;
@@ -192,11 +193,12 @@ pub mod prelude {
     };
     #[cfg(feature = "ui")]
     pub use crate::ui::{
-        LayoutOffset, LayoutSpring, NodeBottom, NodeBottomSpring, NodeHeight, NodeHeightSpring,
-        NodeLeft, NodeLeftSpring, NodePosition, NodePositionSpring, NodeRight, NodeRightSpring,
-        NodeSize, NodeSizeSpring, NodeTop, NodeTopSpring, NodeWidth, NodeWidthSpring,
-        UiTransformRotation, UiTransformRotationSpring, UiTransformScale, UiTransformScaleSpring,
-        UiTransformTranslation, UiTransformTranslationSpring,
+        LayoutOffset, LayoutSpring, MomentumScroll, NodeBottom, NodeBottomSpring, NodeHeight,
+        NodeHeightSpring, NodeLeft, NodeLeftSpring, NodePosition, NodePositionSpring, NodeRight,
+        NodeRightSpring, NodeSize, NodeSizeSpring, NodeTop, NodeTopSpring, NodeWidth,
+        NodeWidthSpring, ScrollSettled, UiTransformRotation, UiTransformRotationSpring,
+        UiTransformScale, UiTransformScaleSpring, UiTransformTranslation,
+        UiTransformTranslationSpring,
     };
     #[cfg(feature = "ui")]
     #[expect(

@@ -10,6 +10,7 @@ use sprung::Spring;
 
 use super::InteractionState;
 use super::velocity::ReleaseVelocity;
+use crate::rubber_band::rubber_band;
 use crate::spring::trigger_if_alive;
 use crate::transform::TranslationSpring;
 #[cfg(feature = "ui")]
@@ -145,13 +146,7 @@ impl DragBounds {
                 return x;
             };
             let edge = if excess < 0.0 { lo } else { hi };
-            if self.give > 0.0 && self.give.is_finite() {
-                let e = excess.abs();
-                let shown = self.give * (1.0 - 1.0 / (1.0 + 0.55 * e / self.give));
-                edge + shown.copysign(excess)
-            } else {
-                edge
-            }
+            edge + rubber_band(excess, self.give)
         };
         Vec3::new(
             band(position.x, self.min.x, self.max.x),

@@ -6,11 +6,13 @@
 //! `Val`s, so a spring toward `px(200.0)` writes pixels.
 
 mod layout;
+mod scroll;
 
 pub use layout::{
     LayoutOffset, LayoutScale, LayoutScaleSpring, LayoutSpring, LayoutTranslation,
     LayoutTranslationSpring,
 };
+pub use scroll::{MomentumScroll, ScrollMotion, ScrollOffset, ScrollSettled, ScrollSpring};
 
 use core::any::TypeId;
 
@@ -20,7 +22,9 @@ use bevy::ui::update::update_clipping_system;
 
 use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Length, Length2, Linear, NeverThroughZero, ShortestAngle};
-use crate::spring::{PropertySpring, add_systems_on_first_use};
+use crate::spring::{
+    PropertySpring, PropertySystems, SpringPhase, SpringUpdate, add_systems_on_first_use,
+};
 
 spring_property!(
     /// `UiTransform::translation`, each axis a [`Length`]: moves a node without relayout (a
@@ -139,9 +143,37 @@ impl Plugin for UiSpringPlugin {
             SpringPropertyPlugin::<NodeBottom>::default(),
             SpringPropertyPlugin::<LayoutTranslation>::default(),
             SpringPropertyPlugin::<LayoutScale>::default(),
+            SpringPropertyPlugin::<ScrollOffset>::default(),
         ))
         .register_type::<LayoutSpring>()
-        .register_type::<LayoutOffset>();
+        .register_type::<LayoutOffset>()
+        .register_type::<MomentumScroll>()
+        .register_type::<ScrollMotion>()
+        .add_observer(scroll::announce_settled);
+        #[cfg(feature = "picking")]
+        app.add_observer(scroll::pointer::wheel)
+            .add_observer(scroll::pointer::start)
+            .add_observer(scroll::pointer::drag)
+            .add_observer(scroll::pointer::release);
+        // With the first scroll area: input and ends before its spring steps, the position
+        // shown after; the rubber band drawn after layout.
+        let scrolls = [TypeId::of::<MomentumScroll>()];
+        add_systems_on_first_use(app, &scrolls, SpringUpdate, |schedule| {
+            schedule.add_systems((
+                scroll::steer_scrolls
+                    .in_set(PropertySystems::<ScrollOffset>::phase(SpringPhase::Input)),
+                scroll::show_scrolls
+                    .in_set(PropertySystems::<ScrollOffset>::phase(SpringPhase::Observe)),
+            ));
+        });
+        add_systems_on_first_use(app, &scrolls, PostUpdate, |schedule| {
+            schedule.add_systems(
+                scroll::draw_rubber_bands
+                    .in_set(UiSystems::PostLayout)
+                    .before(update_clipping_system)
+                    .run_if(any_with_component::<MomentumScroll>),
+            );
+        });
         // With the first layout spring: after layout placed the nodes, and before the clipping
         // rectangles are computed from where they are drawn.
         add_systems_on_first_use(
