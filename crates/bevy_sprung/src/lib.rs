@@ -114,6 +114,14 @@ pub mod guides {
     #[doc = include_str!("../docs/from-bevy-tweening.md")]
     pub mod from_bevy_tweening {}
 
+    /// UI that springs, concept by concept: each Motion (framer-motion), SwiftUI and CSS
+    /// transition idea — presence, layout transitions, staggered children, implicit
+    /// transitions, momentum scrolling — and the code that does it. (Its examples use the `ui`
+    /// feature.)
+    #[cfg(feature = "ui")]
+    #[doc = include_str!("../docs/ui.md")]
+    pub mod ui {}
+
     /// Camera rigs, concept by concept: each Cinemachine, smooth-bevy-cameras and `bevy_dolly`
     /// idea and the code that does it with [`CameraRig`](crate::camera::CameraRig).
     #[cfg(feature = "camera")]

@@ -1,8 +1,5 @@
-//! The rubber band of iOS scroll views, shared by drags ([`DragBounds`]) and momentum scrolling
-//! ([`MomentumScroll`]).
-//!
-//! [`DragBounds`]: https://docs.rs/bevy_sprung/latest/bevy_sprung/interaction/struct.DragBounds.html
-//! [`MomentumScroll`]: https://docs.rs/bevy_sprung/latest/bevy_sprung/ui/struct.MomentumScroll.html
+//! The rubber band of iOS scroll views, shared by drags (`DragBounds`, feature `picking`) and
+//! momentum scrolling (`MomentumScroll`, feature `ui`).
 
 /// How far past an edge something pulled `excess` past it is shown, with at most `give`:
 /// `give·(1 − 1/(1 + 0.55·|excess|/give))` with the sign of `excess`. It starts at 0.55 of the
