@@ -3,6 +3,7 @@
 //! 1. **Reflowing**, criterion, whole frames with `bevy_ui`'s layout: `NODES` nodes in a
 //!    wrapping grid whose `Children` order is reversed every `REFLOW_EVERY` frames, so that
 //!    every node is always in flight.
+//!    - `none`: no spring (the layout's own cost, the base);
 //!    - `layout_spring`: each node has a `LayoutSpring` (it springs from where it was drawn);
 //!    - `translation_spring`: each node has a `UiTransformTranslationSpring` retargeted at each
 //!      reversal instead (the same springs in flight, the same relayouts), the cost a layout
@@ -172,6 +173,7 @@ fn reflow(
 fn reflowing(c: &mut Criterion) {
     let mut group = c.benchmark_group("reflow_10k");
     for (name, scene) in [
+        ("none", Scene::Plain),
         ("translation_spring", Scene::TranslationSpring),
         ("layout_spring", Scene::LayoutSpring),
     ] {
@@ -194,7 +196,10 @@ fn reflowing(c: &mut Criterion) {
                 .iter(world)
                 .count(),
         };
-        assert!(awake > NODES / 2, "{name}: only {awake} springs in flight");
+        assert!(
+            scene == Scene::Plain || awake > NODES / 2,
+            "{name}: only {awake} springs in flight"
+        );
         group.bench_function(name, |b| b.iter(|| app.update()));
     }
     group.finish();
