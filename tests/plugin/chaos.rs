@@ -611,6 +611,8 @@ const OPERATIONS: &[(&str, fn(&mut World))] = &[
     ("camera rig", camera_rig),
     ("camera shots", camera_shots),
     ("window", resize_window),
+    ("presence", presence),
+    ("implicit", implicit),
 ];
 
 /// A live entity to operate on (of `kind`, if given), with the operation noted in its story.
@@ -893,6 +895,71 @@ fn resize_window(world: &mut World) {
     });
     for mut window in world.query::<&mut Window>().iter_mut(world) {
         window.resolution.set(width, height);
+    }
+}
+
+/// Presence: made present (entering from a value, leaving toward one, maybe extreme), asked to
+/// leave (also again, also by a parent that staggers its children), or turned back.
+fn presence(world: &mut World) {
+    let Some(entity) = target_of(world, Some(Kind::Body), "presence") else {
+        return;
+    };
+    let (choice, from, to, interval) = draw(world, |random| {
+        (
+            random.below(6),
+            Translation::value(random),
+            Translation::extreme(random),
+            random.unit() * 0.2,
+        )
+    });
+    match choice {
+        0 => {
+            world.entity_mut(entity).insert((
+                Presence::default(),
+                EnterFrom::<Translation>(from),
+                ExitTo::<Translation>(to),
+            ));
+        }
+        1 | 2 => {
+            world.commands().entity(entity).despawn_after_exit();
+        }
+        3 => {
+            world.commands().entity(entity).cancel_exit();
+        }
+        4 => {
+            world
+                .entity_mut(entity)
+                .insert(StaggerChildren::new(interval));
+        }
+        _ => {
+            world
+                .entity_mut(entity)
+                .remove::<(Presence, ExitTo<Translation>, StaggerChildren)>();
+        }
+    }
+    world.flush();
+}
+
+/// Writes to a translation made to spring (`ImplicitSpring`), or no longer.
+fn implicit(world: &mut World) {
+    let Some(entity) = target_of(world, Some(Kind::Body), "implicit") else {
+        return;
+    };
+    let (add, spring, written) = draw(world, |random| {
+        (
+            random.chance(0.6),
+            spring(random),
+            Translation::value(random),
+        )
+    });
+    let mut entity = world.entity_mut(entity);
+    if add {
+        entity.insert(ImplicitSpring::<Translation>::new(spring));
+        if let Some(mut transform) = entity.get_mut::<Transform>() {
+            transform.translation = written;
+        }
+    } else {
+        entity.remove::<ImplicitSpring<Translation>>();
     }
 }
 
