@@ -33,33 +33,33 @@ use crate::spring::{PropertySpring, SpringTargetMut, trigger_if_alive};
 /// use bevy_sprung::prelude::*;
 ///
 /// #[derive(Component)]
-/// struct Toast;
+/// struct Coin;
 ///
-/// fn show_toast(mut commands: Commands) {
+/// fn spawn_coin(mut commands: Commands) {
 ///     commands.spawn((
-///         Toast,
-///         Node::default(),
+///         Coin,
+///         Transform::default(),
 ///         Presence::default(),
-///         // Slides up 40 px and pops from 80 % while it enters, and leaves the same way.
-///         UiTransformTranslationSpring::new(Spring::snappy(), Val2::ZERO),
-///         EnterFrom::<UiTransformTranslation>(Val2::px(0.0, 40.0)),
-///         ExitTo::<UiTransformTranslation>(Val2::px(0.0, 40.0)),
-///         UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ONE),
-///         EnterFrom::<UiTransformScale>(Vec2::splat(0.8)),
-///         ExitTo::<UiTransformScale>(Vec2::splat(0.8)),
+///         // Rises 40 units and grows from 80 % as it appears; sinks and shrinks as it leaves.
+///         TranslationSpring::new(Spring::snappy(), Vec3::ZERO),
+///         EnterFrom::<Translation>(Vec3::new(0.0, -40.0, 0.0)),
+///         ExitTo::<Translation>(Vec3::new(0.0, -40.0, 0.0)),
+///         ScaleSpring::new(Spring::bouncy(), Vec3::ONE),
+///         EnterFrom::<Scale>(Vec3::splat(0.8)),
+///         ExitTo::<Scale>(Vec3::splat(0.0)),
 ///     ));
 /// }
 ///
-/// fn dismiss(toasts: Query<Entity, With<Toast>>, mut commands: Commands) {
-///     for toast in &toasts {
-///         // Slides out, then is despawned; asking again while it leaves changes nothing.
-///         commands.entity(toast).despawn_after_exit();
+/// fn collect(coins: Query<Entity, With<Coin>>, mut commands: Commands) {
+///     for coin in &coins {
+///         // Leaves, then is despawned; asking again while it leaves changes nothing.
+///         commands.entity(coin).despawn_after_exit();
 ///     }
 /// }
 /// # let mut app = App::new();
 /// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
-/// #     .add_systems(Startup, show_toast)
-/// #     .add_systems(Update, dismiss);
+/// #     .add_systems(Startup, spawn_coin)
+/// #     .add_systems(Update, collect);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]

@@ -23,22 +23,22 @@ use crate::choreography::report_when_settled;
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
 ///
-/// fn open_menu(mut commands: Commands) {
+/// fn deal_cards(mut commands: Commands) {
 ///     commands
-///         .spawn((Node::default(), StaggerChildren::new(0.05).from(StaggerOrder::Centre)))
-///         .with_children(|menu| {
-///             for _ in 0..5 {
-///                 menu.spawn((
-///                     Node::default(),
+///         .spawn((Transform::default(), StaggerChildren::new(0.05).from(StaggerOrder::Centre)))
+///         .with_children(|hand| {
+///             for index in 0..5 {
+///                 hand.spawn((
+///                     Transform::from_xyz(index as f32 * 60.0, 0.0, 0.0),
 ///                     Presence::default(),
-///                     UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ONE),
-///                     EnterFrom::<UiTransformScale>(Vec2::ZERO),
+///                     ScaleSpring::new(Spring::bouncy(), Vec3::ONE),
+///                     EnterFrom::<Scale>(Vec3::ZERO),
 ///                 ));
 ///             }
 ///         });
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, open_menu);
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, deal_cards);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
