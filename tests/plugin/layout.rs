@@ -551,3 +551,30 @@ fn snapping_and_wheel_steps() {
     }
     assert_eq!(last, 400.0);
 }
+
+/// A row hidden with `Display::None` and shown again appears at its place at once (no flight
+/// from where a hidden node is laid out), while its siblings spring around it.
+#[test]
+fn a_hidden_node_shown_again_appears_in_place() {
+    let mut app = ui_app(60);
+    let (_, items) = spawn_column(&mut app, 4, Spring::smooth());
+    run(&mut app, 3);
+    let hidden = items[1];
+    app.world_mut().get_mut::<Node>(hidden).unwrap().display = Display::None;
+    run(&mut app, 5);
+    // The next row springs up into the gap.
+    assert!(drawn(&app, items[2]).y < slot(2).y && drawn(&app, items[2]).y > slot(1).y);
+    run(&mut app, 120);
+    assert_eq!(drawn(&app, items[2]), slot(1));
+    app.world_mut().get_mut::<Node>(hidden).unwrap().display = Display::Flex;
+    app.update();
+    assert_eq!(drawn(&app, hidden), slot(1));
+    assert_eq!(
+        *app.world().get::<LayoutOffset>(hidden).unwrap(),
+        LayoutOffset::ZERO
+    );
+    // Its sibling springs back down from where it was drawn.
+    assert_eq!(drawn(&app, items[2]), slot(1));
+    run(&mut app, 120);
+    assert_eq!(drawn(&app, items[2]), slot(2));
+}

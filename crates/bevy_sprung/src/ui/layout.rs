@@ -30,8 +30,10 @@ use crate::spring::PropertySpring;
 /// change is drawn as a scale of the node's own box (background, border, its own text), while
 /// its children keep their size and move with the scaled box.
 ///
-/// Once the node has arrived its springs sleep, and a node whose layout does not change costs a
-/// change-detection test per frame.
+/// A node hidden with `Display::None` (laid out with no size) is not sprung: shown again, it
+/// appears at its place at once (give it a [`Presence`](crate::presence::Presence) to make it
+/// enter). Once the node has arrived its springs sleep, and a node whose layout does not change
+/// costs a change-detection test per frame.
 ///
 /// # Example
 /// ```
@@ -171,6 +173,11 @@ struct LayoutBox {
 const SMALLEST_MOVE: f32 = 1e-3;
 
 impl LayoutBox {
+    /// Whether layout gave the node no size at all (`Display::None`, or collapsed to nothing).
+    fn is_hidden(&self) -> bool {
+        self.size == Vec2::ZERO
+    }
+
     /// The offset that draws a node laid out at `self` where it was drawn at `before` with
     /// `offset`: the same centre and, with `size`, the same size.
     fn offset_from(&self, before: &Self, offset: LayoutOffset, size: bool) -> LayoutOffset {
@@ -289,8 +296,20 @@ pub(super) fn note_reflows(
         }
         .layout_box(parent);
         let before = laid_out.0.replace(now);
-        // First laid out, or moved to another parent: drawn where layout puts it.
-        let Some(before) = before.filter(|before| before.parent == now.parent) else {
+        if now.is_hidden() {
+            // Hidden (`Display::None` lays a node out with no size): nothing is drawn, and
+            // nothing of its motion is kept for when it shows again.
+            if *offset != LayoutOffset::ZERO {
+                *offset = LayoutOffset::ZERO;
+                translation.set_velocity(Vec2::ZERO);
+                scale.set_velocity(Vec2::ZERO);
+            }
+            continue;
+        }
+        // First laid out, shown again, or moved to another parent: drawn where layout puts it.
+        let Some(before) =
+            before.filter(|before| before.parent == now.parent && !before.is_hidden())
+        else {
             continue;
         };
         if before == now {
