@@ -7,7 +7,7 @@ use bevy::camera::{OrthographicProjection, Projection};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy::window::{PrimaryWindow, WindowResolution};
-use bevy_sprung::camera::{CameraRigSystems, RigMotion};
+use bevy_sprung::camera::{CameraRigSystems, RigHorizontal, RigMotion, RigVertical};
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::SpringUpdate;
 
@@ -197,6 +197,41 @@ fn a_goal_of_the_apps_own_gets_the_exact_moving_target_step() {
     }
     for offset in &results {
         assert!(offset.distance(results[0]) < 1e-3);
+    }
+}
+
+/// A goal that moved and then stays not finite: the rig keeps its last goal and stops following
+/// the goal's last velocity, so its springs come to rest (they followed a target moving at that
+/// velocity for ever).
+#[test]
+fn a_goal_that_turns_nan_mid_motion_lets_the_rig_rest() {
+    fn moving_then_nan(time: Res<Time>, mut goals: Query<&mut CameraGoal>) {
+        let t = time.elapsed_secs();
+        for mut goal in &mut goals {
+            goal.point = if t < 2.0 {
+                Vec3::new(25.0, 10.0, 0.0) * t
+            } else {
+                Vec3::NAN
+            };
+        }
+    }
+    for fps in RATES {
+        let mut app = app(fps);
+        app.add_systems(SpringUpdate, moving_then_nan.in_set(CameraRigSystems::Goal));
+        let camera = app
+            .world_mut()
+            .spawn((CameraRig::new(Spring::smooth()), LookAhead::new(0.2)))
+            .id();
+        for _ in 0..fps * 8 {
+            app.update();
+            assert!(translation(&app, camera).is_finite(), "{fps} fps");
+        }
+        let world = app.world();
+        assert!(
+            world.get::<SpringAsleep<RigHorizontal>>(camera).is_some()
+                && world.get::<SpringAsleep<RigVertical>>(camera).is_some(),
+            "{fps} fps: the rig still follows a goal that stopped"
+        );
     }
 }
 
@@ -1006,8 +1041,6 @@ fn targets_moving_in_fixed_update_are_followed_without_jitter_under_uneven_frame
 
 #[test]
 fn a_rig_removed_or_stripped_mid_motion_comes_to_rest() {
-    use bevy_sprung::camera::{RigHorizontal, RigVertical};
-
     let (mut app, player) = camera_app(60, (800, 600), |t| Vec3::new(300.0 * t, 100.0 * t, 0.0));
     let removed = app
         .world_mut()

@@ -150,6 +150,8 @@ pub(super) fn track_goals(
             warn_once!(
                 "bevy_sprung: a CameraGoal's point is not finite; the rig keeps its last goal"
             );
+            // Kept, so no longer moving: the zoom stops following its last rate.
+            rig.zoom.set_target_velocity_if_neq(0.0);
             continue;
         }
         let dt = steps.dt(rig.zoom.clock());
@@ -221,6 +223,8 @@ pub(super) fn track_goals(
             if first_frame {
                 rig.motion.set_zoom(zoom);
             }
+        } else {
+            rig.zoom.set_target_velocity_if_neq(0.0);
         }
     }
 }
@@ -243,6 +247,15 @@ pub(super) struct Framed {
     view: View,
 }
 
+impl FramedItem<'_, '_> {
+    /// A frame with no goal to frame (not finite): the goal holds where it was, so the springs
+    /// stop following its last velocity and come to rest.
+    fn hold_goal(&mut self) {
+        self.horizontal.set_target_velocity_if_neq(Vec2::ZERO);
+        self.vertical.set_target_velocity_if_neq(0.0);
+    }
+}
+
 /// After the look-ahead, zoom and orbit stepped: the centre the camera springs to (the goal
 /// plus look-ahead, held by the dead zone, moved by the screen position, kept near the
 /// confiner), with its velocity, for the horizontal and vertical springs.
@@ -259,6 +272,7 @@ pub(super) fn frame_goals(
         let half_view = view_half_extents(&rig.view, window, zoom, distance);
         let point = rig.goal.point + rig.motion.look_ahead();
         if !point.is_finite() {
+            rig.hold_goal();
             continue;
         }
 
@@ -295,6 +309,7 @@ pub(super) fn frame_goals(
             centre.y = centre.y.clamp(low, high);
         }
         if !centre.is_finite() {
+            rig.hold_goal();
             continue;
         }
 
