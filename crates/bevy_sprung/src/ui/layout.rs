@@ -13,6 +13,7 @@ use bevy::prelude::*;
 use bevy::ui::{ComputedUiRenderTargetInfo, IgnoreScroll, UiGlobalTransform};
 use sprung::{RestThreshold, Spring};
 
+use super::drawn::shift_subtrees;
 use crate::space::Linear;
 use crate::spring::PropertySpring;
 
@@ -393,18 +394,7 @@ pub(super) fn draw_offsets(
                 }
             }
             Drawn::Shift(by) => {
-                stack.clear();
-                stack.push(entity);
-                while let Some(node) = stack.pop() {
-                    if let Ok(mut global) = globals.get_mut(node) {
-                        let mut affine = **global;
-                        affine.translation += by;
-                        *global = affine.into();
-                    }
-                    if let Ok(children) = descendants.get(node) {
-                        stack.extend(children.iter());
-                    }
-                }
+                shift_subtrees(&mut globals, &descendants, &mut stack, [entity], by);
             }
         }
     }

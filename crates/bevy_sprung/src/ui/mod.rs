@@ -5,6 +5,7 @@
 //! `left: Val::Percent(10.0)` sprung to `Val::Percent(50.0)` slides to 50 %). Targets are
 //! `Val`s, so a spring toward `px(200.0)` writes pixels.
 
+mod drawn;
 mod layout;
 mod scroll;
 

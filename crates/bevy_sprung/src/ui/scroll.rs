@@ -5,6 +5,7 @@ use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
 use sprung::{RestThreshold, Spring};
 
+use super::drawn::shift_subtrees;
 use crate::rubber_band::rubber_band;
 use crate::space::Linear;
 use crate::spring::{PropertySpring, SpringSettled, trigger_if_alive};
@@ -354,18 +355,7 @@ pub(super) fn draw_rubber_bands(
         }
         // Scrolling down moves the content up: the content moves against the scroll.
         let by = -extent.shown_past / node.inverse_scale_factor;
-        stack.clear();
-        stack.extend(children.iter());
-        while let Some(entity) = stack.pop() {
-            if let Ok(mut global) = globals.get_mut(entity) {
-                let mut affine = **global;
-                affine.translation += by;
-                *global = affine.into();
-            }
-            if let Ok(children) = descendants.get(entity) {
-                stack.extend(children.iter());
-            }
-        }
+        shift_subtrees(&mut globals, &descendants, &mut stack, children.iter(), by);
     }
 }
 
