@@ -13,7 +13,8 @@
 //!    difference per node per frame is what a layout spring costs when its layout does not
 //!    change.
 
-use std::process::Command;
+#[path = "support/callgrind.rs"]
+mod callgrind;
 
 use bevy::app::{HierarchyPropagatePlugin, PropagateSet};
 use bevy::camera::{ComputedCameraValues, RenderTargetInfo, Viewport};
@@ -23,6 +24,7 @@ use bevy::ui::update::propagate_ui_target_cameras;
 use bevy::ui::{ComputedUiRenderTargetInfo, ComputedUiTargetCamera, UiScale, UiSystems};
 use bevy_sprung::prelude::*;
 use bevy_sprung::ui::LayoutTranslation;
+use callgrind::callgrind;
 use criterion::{Criterion, criterion_group};
 
 /// Nodes per scene.
@@ -220,27 +222,7 @@ const COUNTED_FRAMES: u32 = 10;
 
 /// Instructions of the still grid's frames under callgrind, with or without layout springs.
 fn count(scene: Scene) -> u64 {
-    let exe = std::env::current_exe().expect("the bench binary");
-    let name = format!("{scene:?}");
-    let out = std::env::temp_dir().join(format!("callgrind.sprung.layout.{name}"));
-    let status = Command::new("valgrind")
-        .arg("--tool=callgrind")
-        .arg("--collect-atstart=no")
-        .arg("--toggle-collect=*layout::measured")
-        .arg(format!("--callgrind-out-file={}", out.display()))
-        .arg(&exe)
-        .args(["one", &name])
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .status()
-        .expect("valgrind runs (install it: apt-get install valgrind)");
-    assert!(status.success(), "callgrind failed for {name}");
-    let text = std::fs::read_to_string(&out).expect("callgrind output");
-    let _removed = std::fs::remove_file(&out);
-    text.lines()
-        .find_map(|line| line.strip_prefix("summary: "))
-        .and_then(|total| total.trim().parse().ok())
-        .expect("a summary line")
+    callgrind("*layout::measured", None, &["one", &format!("{scene:?}")])
 }
 
 fn main() {
