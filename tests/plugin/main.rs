@@ -22,6 +22,7 @@ mod follow;
 mod implicit;
 mod interaction;
 mod juice;
+mod layers;
 mod layout;
 mod motion;
 mod presence;

@@ -89,6 +89,7 @@ pub mod implicit;
 #[cfg(feature = "picking")]
 pub mod interaction;
 pub mod juice;
+pub mod layers;
 mod plugin;
 pub mod presence;
 mod property_plugin;
@@ -176,6 +177,7 @@ pub mod prelude {
         SpringDrag,
     };
     pub use crate::juice::{Conserve, Shake, SquashStretch};
+    pub use crate::layers::{LayerSpring, SpringLayerPlugin, SpringLayers};
     pub use crate::presence::{
         EnterFrom, Entered, ExitTo, Exited, Presence, PresenceCommands, PresencePhase,
         StaggerChildren, StaggerOrder, StaggerWhen,

@@ -10,7 +10,7 @@
 //!   removed before it runs again, so the two never fight.
 //! - **Squash & stretch**: [`SquashStretch`] stretches an entity along its velocity and
 //!   squashes it on impact, keeping its volume (or area), and returns to rest through its own
-//!   spring.
+//!   spring: a layer of the scale ([`Squash`]), so it stacks on any other scale motion.
 //!
 //! Entities without these components cost nothing: the systems run only while some entity has
 //! one, and iterate only those.
@@ -20,22 +20,23 @@ mod shake;
 mod squash;
 
 pub use shake::Shake;
-pub use squash::{Conserve, SquashStretch};
+pub use squash::{Conserve, Squash, SquashStretch};
 
 use bevy::app::AnimationSystems;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 
-/// The juice systems that write `Transform`s: in `PostUpdate`, after the springs
-/// (`AnimationSystems`) and before transform propagation. [`SquashStretch`] runs first, then
-/// the [`Shake`]s are added. (A shake is taken off again in `PreUpdate`.)
+/// The juice systems that write `Transform`s: in `PostUpdate`, after the springs and their
+/// layers (`AnimationSystems`) and before transform propagation, the [`Shake`]s are added.
+/// (A shake is taken off again in `PreUpdate`, before the layers.) [`SquashStretch`] is a
+/// layer: it runs before [`LayerSystems`](crate::layers::LayerSystems).
 #[derive(SystemSet, Debug, Clone, PartialEq, Eq, Hash)]
 pub struct JuiceSystems;
 
-/// [`Shake`] and [`SquashStretch`] (part of [`SpringPlugin`](crate::SpringPlugin)): both run in
-/// `PostUpdate` after the springs (`AnimationSystems`) and before transform propagation, in
-/// [`JuiceSystems`]; a shake is taken off again in `PreUpdate`, before gameplay reads or writes
-/// the `Transform`.
+/// [`Shake`] and [`SquashStretch`] (part of [`SpringPlugin`](crate::SpringPlugin)): a shake
+/// is added in `PostUpdate` after the springs (`AnimationSystems`) and before transform
+/// propagation, in [`JuiceSystems`], and taken off again in `PreUpdate`, before gameplay reads
+/// or writes the `Transform`; a squash writes its layer of the scale after the springs.
 #[derive(Debug, Default, Clone, Copy)]
 pub struct JuicePlugin;
 

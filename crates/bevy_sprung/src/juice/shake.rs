@@ -335,7 +335,11 @@ pub(super) fn build(app: &mut App) {
     // With the first shake.
     let shakes = [core::any::TypeId::of::<Shake>()];
     add_systems_on_first_use(app, &shakes, PreUpdate, |schedule| {
-        schedule.add_systems(take_off_shakes.run_if(any_with_component::<Shake>));
+        schedule.add_systems(
+            take_off_shakes
+                .before(crate::layers::LayerSystems)
+                .run_if(any_with_component::<Shake>),
+        );
     });
     add_systems_on_first_use(app, &shakes, PostUpdate, |schedule| {
         schedule.add_systems(

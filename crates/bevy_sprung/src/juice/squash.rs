@@ -1,13 +1,13 @@
 //! Squash & stretch along the velocity, volume (or area) preserved.
 
+use bevy::app::AnimationSystems;
 use bevy::log::warn_once;
 use bevy::prelude::*;
 use sprung::Spring;
 
-use super::JuiceSystems;
-use crate::spring::SpringMotion;
-use crate::spring::add_systems_on_first_use;
-use crate::transform::Translation;
+use crate::layers::{LayerSystems, SpringLayers};
+use crate::spring::{SpringMotion, SpringSystems, add_systems_on_first_use};
+use crate::transform::{Scale, Translation};
 
 /// What a [`SquashStretch`] keeps while it deforms.
 #[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
@@ -37,12 +37,13 @@ pub enum Conserve {
 ///
 /// The deformation is the logarithm of the scale per local axis, `ℓ`, sprung toward
 /// `ℓᵢ = ln(stretch)·(3dᵢ² − 1)/2` (`Volume`) or `ln(stretch)·(2dᵢ² − 1)` (`Area`, in x–y) for
-/// the unit direction of motion `d`, and written as `Transform::scale = base_scale · exp(ℓ)`.
-/// Every target and kick has `Σℓᵢ = 0`, and a spring step is linear, so the volume (area) is
-/// kept to rounding for any direction, squash or stretch, with a scale that is always
-/// positive. The scale is written on the entity's local axes, so use it on an entity without a
-/// [`ScaleSpring`](crate::transform::ScaleSpring) (put one of them on a child). At rest it
-/// writes nothing.
+/// the unit direction of motion `d`. It is a layer of the scale (the [`Squash`] layer of the
+/// entity's [`SpringLayers<Scale>`](SpringLayers)): the scale shown is the entity's own scale
+/// times `exp(ℓ)` per local axis, so it stacks on a [`ScaleSpring`](crate::transform::ScaleSpring),
+/// a hover or a punch layer, and gameplay still reads and writes the undeformed scale. Every
+/// target and kick has `Σℓᵢ = 0`, and a spring step is linear, so the volume (area) is kept to
+/// rounding for any direction, squash or stretch, with a scale that is always positive. At
+/// rest it writes nothing.
 ///
 /// # Example
 /// ```
@@ -64,6 +65,7 @@ pub enum Conserve {
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
 #[component(on_add = crate::spring::first_use::<SquashStretch>)]
+#[require(SpringLayers<Scale>)]
 #[reflect(Component, Debug, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SquashStretch {
@@ -76,8 +78,6 @@ pub struct SquashStretch {
     pub spring: Spring<f32>,
     /// What the deformation keeps.
     pub conserve: Conserve,
-    /// The scale when undeformed.
-    pub base_scale: Vec3,
     #[reflect(ignore)]
     #[cfg_attr(feature = "serde", serde(skip))]
     motion: SquashMotion,
@@ -109,7 +109,6 @@ impl SquashStretch {
             max_stretch,
             spring: Spring::bouncy(),
             conserve: Conserve::Volume,
-            base_scale: Vec3::ONE,
             motion: SquashMotion::default(),
         }
     }
@@ -125,13 +124,6 @@ impl SquashStretch {
     #[must_use]
     pub fn with_spring(mut self, spring: Spring<f32>) -> Self {
         self.spring = spring;
-        self
-    }
-
-    /// The same, with `base_scale` as the undeformed scale.
-    #[must_use]
-    pub fn with_base_scale(mut self, base_scale: Vec3) -> Self {
-        self.base_scale = base_scale;
         self
     }
 
@@ -154,7 +146,8 @@ impl SquashStretch {
         self.motion.resting = false;
     }
 
-    /// The deformation's scale factors per local axis (multiply by `base_scale`): their product
+    /// The deformation's scale factors per local axis (the entity's own scale is multiplied by
+    /// them): their product
     /// is 1 (`Volume`), or that of x and y is (`Area`).
     #[must_use]
     pub fn factors(&self) -> Vec3 {
@@ -183,13 +176,18 @@ fn factors(stretch: Vec3, conserve: Conserve) -> Vec3 {
     }
 }
 
+/// The layer of the scale a [`SquashStretch`] writes: the logarithms of its factors.
+#[derive(TypePath)]
+pub struct Squash;
+
 /// After the springs: steps every deformation toward the stretch its velocity asks for and
-/// writes the scale.
+/// writes it as the [`Squash`] layer of the scale.
 fn squash_and_stretch(
     time: Res<Time>,
     mut bodies: Query<(
         &mut SquashStretch,
-        &mut Transform,
+        &mut SpringLayers<Scale>,
+        &Transform,
         &GlobalTransform,
         Option<&SpringMotion<Translation>>,
     )>,
@@ -198,7 +196,7 @@ fn squash_and_stretch(
     if !(dt > 0.0 && dt.is_finite()) {
         return;
     }
-    for (mut squash, mut transform, global, motion) in &mut bodies {
+    for (mut squash, mut layers, transform, global, motion) in &mut bodies {
         let squash = squash.bypass_change_detection();
         let position = global.translation();
         let velocity = match (motion, squash.motion.last_position) {
@@ -243,9 +241,12 @@ fn squash_and_stretch(
             motion.stretch = Vec3::ZERO;
             motion.rate = Vec3::ZERO;
         }
-        let scale = squash.base_scale * factors(squash.motion.stretch, squash.conserve);
-        if transform.scale != scale {
-            transform.scale = scale;
+        let logarithms = match squash.conserve {
+            Conserve::Volume => motion.stretch,
+            Conserve::Area => motion.stretch.with_z(0.0),
+        };
+        if layers.get::<Squash>() != logarithms {
+            layers.set::<Squash>(logarithms);
         }
     }
 }
@@ -253,13 +254,15 @@ fn squash_and_stretch(
 pub(super) fn build(app: &mut App) {
     app.register_type::<SquashStretch>()
         .register_type::<Conserve>();
+    crate::layers::add_layered_property::<Scale>(app);
     // With the first squash and stretch.
     let squashes = [core::any::TypeId::of::<SquashStretch>()];
     add_systems_on_first_use(app, &squashes, PostUpdate, |schedule| {
         schedule.add_systems(
             squash_and_stretch
-                .in_set(JuiceSystems)
-                .before(super::shake::add_shakes)
+                .in_set(AnimationSystems)
+                .after(SpringSystems)
+                .before(LayerSystems)
                 .run_if(any_with_component::<SquashStretch>),
         );
     });
