@@ -41,7 +41,10 @@ fn ulp(v: Vec3) -> f32 {
 fn layers_add_up_to_the_separate_springs() {
     for fps in [30, 60, 144, 240] {
         let mut app = layered_app(fps);
-        let (from, to) = (Vec3::new(-1800.0, 900.0, 0.0), Vec3::new(2400.0, -300.0, 5.0));
+        let (from, to) = (
+            Vec3::new(-1800.0, 900.0, 0.0),
+            Vec3::new(2400.0, -300.0, 5.0),
+        );
         let (hover, kick) = (Vec3::new(0.0, 24.0, 0.0), Vec3::new(-40.0, 0.0, 0.0));
         let world = app.world_mut();
         let layered = world
@@ -137,7 +140,11 @@ fn gameplay_sees_and_writes_the_base() {
     run(&mut app, 120);
     let seen = &app.world().resource::<Seen>().0;
     for (frame, seen) in seen.iter().enumerate() {
-        assert_eq!(*seen, Vec3::new(10.0 + frame as f32, 0.0, 0.0), "frame {frame}");
+        assert_eq!(
+            *seen,
+            Vec3::new(10.0 + frame as f32, 0.0, 0.0),
+            "frame {frame}"
+        );
     }
     assert_eq!(translation(&app, entity), Vec3::new(130.0, 30.0, 0.0));
 }
@@ -195,7 +202,10 @@ fn a_layer_added_or_removed_mid_flight_does_not_jump() {
         for _ in 0..(3 * fps) {
             app.update();
             let now = translation(&app, layered);
-            assert!(now.distance(last) <= bound, "{fps} fps: jumped {last} → {now}");
+            assert!(
+                now.distance(last) <= bound,
+                "{fps} fps: jumped {last} → {now}"
+            );
             last = now;
         }
         assert_eq!(last, to, "{fps} fps: the base spring carried the lift home");

@@ -13,6 +13,7 @@ mod assets;
 mod bad_input;
 mod camera;
 mod catch_up;
+mod chain;
 mod chaos;
 mod choreography;
 mod clocks;

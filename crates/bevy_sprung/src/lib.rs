@@ -77,6 +77,7 @@ pub mod property;
 pub mod asset;
 #[cfg(feature = "camera")]
 pub mod camera;
+pub mod chain;
 pub mod choreography;
 pub mod clock;
 #[cfg(feature = "color")]
@@ -148,6 +149,7 @@ pub mod prelude {
         CameraBlend, CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, ConfinerVolume,
         DeadZone, GroupFraming, LookAhead, OrbitRig, ScreenPosition, VirtualCamera,
     };
+    pub use crate::chain::{ChainCollider, SpringChain};
     pub use crate::choreography::{
         Advance, AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted,
         SequenceInterrupted, SpringGroup, SpringGroupSettled, SpringSequence,

@@ -151,6 +151,7 @@ impl Plugin for SpringPlugin {
             ChoreographyPlugin,
             JuicePlugin,
             PresencePlugin,
+            crate::chain::SpringChainPlugin,
         ));
         #[cfg(feature = "color")]
         app.add_plugins(crate::color::ColorSpringPlugin);

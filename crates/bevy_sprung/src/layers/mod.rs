@@ -36,7 +36,9 @@ pub use space::LayerSpace;
 use crate::property::{SpringProperty, ValueOf};
 use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Linear, LinearValue, SpringSpace};
-use crate::spring::{PropertySpring, SpringSystems, add_systems_on_first_use, first_use, warn_missing};
+use crate::spring::{
+    PropertySpring, SpringSystems, add_systems_on_first_use, first_use, warn_missing,
+};
 
 /// A layer's value for property `P`.
 pub type LayerOf<P> = <<P as SpringProperty>::Space as LayerSpace>::Layer;
@@ -161,7 +163,10 @@ impl<P: SpringProperty<Space: LayerSpace>> fmt::Debug for SpringLayers<P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("SpringLayers")
             .field("property", &P::short_type_path())
-            .field("layers", &self.layers.iter().map(|(_, v)| v).collect::<Vec<_>>())
+            .field(
+                "layers",
+                &self.layers.iter().map(|(_, v)| v).collect::<Vec<_>>(),
+            )
             .finish_non_exhaustive()
     }
 }
@@ -250,7 +255,12 @@ where
     L: TypePath + Send + Sync + 'static,
 {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "SpringLayerPlugin<{}, {}>", P::short_type_path(), L::short_type_path())
+        write!(
+            f,
+            "SpringLayerPlugin<{}, {}>",
+            P::short_type_path(),
+            L::short_type_path()
+        )
     }
 }
 

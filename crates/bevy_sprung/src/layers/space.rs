@@ -2,7 +2,9 @@
 
 use bevy::math::{Quat, Rot2, Vec2, Vec3};
 
-use crate::space::{Linear, LinearValue, NeverThroughZero, ShortestAngle, ShortestArc, SpringSpace};
+use crate::space::{
+    Linear, LinearValue, NeverThroughZero, ShortestAngle, ShortestArc, SpringSpace,
+};
 
 /// A [`SpringSpace`] whose values take layers: offsets, each a vector that springs on its own,
 /// applied on top of a base value.

@@ -1,0 +1,590 @@
+//! The step of every chain: root to leaf, each bone's tip springs toward where its parent's
+//! pose puts it at rest, and the joint turns toward the tip.
+
+use bevy::ecs::system::SystemParam;
+use bevy::log::warn_once;
+use bevy::math::Affine3A;
+use bevy::prelude::*;
+use sprung::{Spring, SpringState};
+
+use super::collider::PlacedCollider;
+use super::{CachedTransition, ChainCollider, ChainJoint, SpringChain};
+
+/// Passes over a chain's colliders per bone: a capsule's nearest point moves as the end turns.
+const COLLIDER_PASSES: usize = 3;
+
+/// A tip rests within this fraction of its bone's length of where gravity holds it (a
+/// ten-thousandth of a radian), moving slower than that many lengths per second times its
+/// natural frequency.
+const REST: f32 = 1e-4;
+
+/// What a chain carries between frames.
+#[derive(Debug, Clone, Default)]
+pub(super) struct ChainState {
+    /// Put every tip at rest at the next step.
+    pub reset: bool,
+    /// Nothing moves: nothing is stepped or written until something does.
+    pub resting: bool,
+    joints: Vec<Joint>,
+    /// The time since the last step of the grid.
+    behind: f32,
+    /// Each joint's world pose, world rotation and local rotation after the last pass
+    /// (scratch, kept for its allocation).
+    poses: Vec<(Affine3A, Quat, Quat)>,
+    /// The world pose of the chain's parent, and the first joint's position, last frame.
+    last_parent: Option<Affine3A>,
+    last_root: Option<Vec3>,
+}
+
+/// One joint of a chain.
+#[derive(Debug, Clone)]
+struct Joint {
+    entity: Entity,
+    /// The joint it hangs from (`None`: the chain's own entity, which hangs from the chain's
+    /// parent).
+    parent: Option<usize>,
+    /// Where its bone ends: at its one child joint, at the chain's `end`, or nowhere.
+    bone: Bone,
+    spring: Spring<f32>,
+    gravity_scale: f32,
+    /// Its local rotation as others gave it, and the one the chain last wrote.
+    rest: Quat,
+    written: Option<Quat>,
+    /// The tip's offset from its rest place and its velocity, in world units.
+    offset: Vec3,
+    velocity: Vec3,
+    /// Where the tip rested last frame, in the world.
+    rest_tip: Option<Vec3>,
+    step: Option<CachedTransition>,
+}
+
+impl Joint {
+    /// Where the spring holds the tip under a constant `acceleration`: `m·a/k` off its rest
+    /// place (none without stiffness).
+    fn hangs(&self, acceleration: Vec3) -> Vec3 {
+        let stiffness = self.spring.stiffness();
+        if stiffness > 0.0 {
+            acceleration * (self.spring.mass() / stiffness)
+        } else {
+            Vec3::ZERO
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Bone {
+    None,
+    Child(usize),
+    End,
+}
+
+/// What the chain step reads besides the chains.
+#[derive(SystemParam)]
+pub(super) struct ChainWorld<'w, 's> {
+    time: Res<'w, Time>,
+    transforms: Query<'w, 's, &'static mut Transform>,
+    parents: Query<'w, 's, &'static ChildOf>,
+    children: Query<'w, 's, &'static Children>,
+    reshaped: Query<'w, 's, (), Changed<Children>>,
+    colliders: Query<'w, 's, &'static ChainCollider>,
+    joints: Query<'w, 's, &'static ChainJoint>,
+}
+
+impl ChainWorld<'_, '_> {
+    /// The world pose of `entity` from the `Transform`s as they are now (not last frame's
+    /// `GlobalTransform`): its ancestors may have moved this frame.
+    fn pose_of(&self, entity: Entity) -> Affine3A {
+        let mut pose = self
+            .transforms
+            .get(entity)
+            .map_or(Affine3A::IDENTITY, Transform::compute_affine);
+        let mut current = entity;
+        while let Ok(child_of) = self.parents.get(current) {
+            current = child_of.parent();
+            if let Ok(transform) = self.transforms.get(current) {
+                pose = transform.compute_affine() * pose;
+            }
+        }
+        pose
+    }
+
+    /// The pose of the chain's parent (the identity for a chain at the top of its hierarchy).
+    fn parent_pose(&self, chain: Entity) -> Affine3A {
+        self.parents
+            .get(chain)
+            .map_or(Affine3A::IDENTITY, |child_of| {
+                self.pose_of(child_of.parent())
+            })
+    }
+}
+
+/// `PostUpdate`: steps every chain that moves.
+pub(super) fn step_chains(mut chains: Query<(Entity, &mut SpringChain)>, mut world: ChainWorld) {
+    let dt = world.time.delta_secs();
+    if !(dt >= 0.0 && dt.is_finite()) {
+        return;
+    }
+    for (entity, mut chain) in &mut chains {
+        let configured = chain.is_changed();
+        let chain = chain.bypass_change_detection();
+        if configured || needs_rebuild(entity, &chain.state, &world) {
+            rebuild(entity, chain, &world);
+        }
+        let parent = world.parent_pose(entity);
+        let still = chain.state.last_parent == Some(parent)
+            && !chain.state.reset
+            && !configured
+            && !chain.state.joints.iter().any(|joint| {
+                world
+                    .transforms
+                    .get_mut(joint.entity)
+                    .is_ok_and(|transform| transform.is_changed())
+            });
+        if chain.state.resting && still {
+            continue;
+        }
+        step_chain(chain, parent, dt, &mut world);
+    }
+}
+
+/// Whether the chain's joints changed: one despawned, or children added or removed.
+fn needs_rebuild(entity: Entity, state: &ChainState, world: &ChainWorld) -> bool {
+    state.joints.is_empty()
+        || world.reshaped.contains(entity)
+        || state.joints.iter().any(|joint| {
+            !world.transforms.contains(joint.entity) || world.reshaped.contains(joint.entity)
+        })
+}
+
+/// Finds the chain's joints (its entity and every descendant with a `Transform`, parents
+/// first) and their springs, keeping the motion of joints it had.
+fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
+    let old = core::mem::take(&mut chain.state.joints);
+    let mut found: Vec<(Entity, Option<usize>, u32)> = vec![(entity, None, 0)];
+    let mut next = 0;
+    while next < found.len() {
+        let (joint, _, depth) = found[next];
+        if let Ok(children) = world.children.get(joint) {
+            for &child in children {
+                if world.transforms.contains(child) {
+                    found.push((child, Some(next), depth + 1));
+                }
+            }
+        }
+        next += 1;
+    }
+    let deepest = found
+        .iter()
+        .map(|&(_, _, depth)| depth)
+        .max()
+        .unwrap_or(0)
+        .max(1);
+    let lerp = |[root, tip]: [f32; 2], depth: f32| root + (tip - root) * depth;
+    chain.state.joints = found
+        .iter()
+        .enumerate()
+        .map(|(index, &(joint, parent, depth))| {
+            let mut children = found
+                .iter()
+                .enumerate()
+                .filter(|(_, (_, parent, _))| *parent == Some(index));
+            let bone = match (children.next(), children.next()) {
+                (Some((child, _)), None) => Bone::Child(child),
+                (None, _) if chain.end.is_some() => Bone::End,
+                _ => Bone::None,
+            };
+            let depth = depth as f32 / deepest as f32;
+            let (spring, gravity_scale) = if let Ok(own) = world.joints.get(joint) {
+                (own.spring, own.gravity_scale)
+            } else {
+                let gradient = chain.gradient;
+                let spring = &chain.spring;
+                let scaled = Spring::new(
+                    spring.mass(),
+                    spring.stiffness() * lerp(gradient.stiffness, depth),
+                    spring.damping() * lerp(gradient.damping, depth),
+                );
+                (scaled.unwrap_or(chain.spring), lerp(gradient.gravity, depth))
+            };
+            let kept = old.iter().find(|kept| kept.entity == joint);
+            Joint {
+                entity: joint,
+                parent,
+                bone,
+                spring,
+                gravity_scale,
+                rest: kept.map_or(Quat::IDENTITY, |kept| kept.rest),
+                written: kept.and_then(|kept| kept.written),
+                offset: kept.map_or(Vec3::ZERO, |kept| kept.offset),
+                velocity: kept.map_or(Vec3::ZERO, |kept| kept.velocity),
+                rest_tip: kept.and_then(|kept| kept.rest_tip),
+                step: None,
+            }
+        })
+        .collect();
+    chain.state.resting = false;
+}
+
+/// Time within this of a step of the grid is on it (frame times are whole nanoseconds).
+const ON_GRID: f32 = 1e-6;
+
+/// One frame of one chain: the whole steps of its grid that the frame passed, root to leaf,
+/// each toward the parent's pose at that step (interpolated over the frame), then the rest of
+/// the frame as a step that is shown and not kept.
+fn step_chain(chain: &mut SpringChain, parent: Affine3A, dt: f32, world: &mut ChainWorld) {
+    let colliders: Vec<PlacedCollider> = chain
+        .colliders
+        .iter()
+        .filter_map(|&collider| {
+            let shape = world.colliders.get(collider).ok()?;
+            PlacedCollider::new(*shape, &GlobalTransform::from(world.pose_of(collider)))
+        })
+        .collect();
+    let root = chain.state.joints.first().and_then(|joint| {
+        let transform = world.transforms.get(joint.entity).ok()?;
+        Some(parent.transform_point3(transform.translation))
+    });
+    let teleported = match (root, chain.state.last_root) {
+        (Some(now), Some(before)) => now.distance(before) > chain.teleport_distance,
+        _ => false,
+    };
+    let before = match chain.state.last_parent {
+        Some(before) if !teleported => before,
+        _ => parent,
+    };
+    chain.state.last_parent = Some(parent);
+    chain.state.last_root = root;
+    if teleported || core::mem::take(&mut chain.state.reset) {
+        // The tips move with their rest places: nothing swings from the jump.
+        let reset = !teleported;
+        for joint in &mut chain.state.joints {
+            joint.rest_tip = None;
+            if reset {
+                joint.offset = joint.hangs((chain.gravity + chain.wind) * joint.gravity_scale);
+                joint.velocity = Vec3::ZERO;
+            }
+        }
+    }
+    let grid = if chain.rate > 0.0 && chain.rate.is_finite() {
+        chain.rate.recip()
+    } else {
+        dt
+    };
+    let pass = Pass {
+        end: chain.end,
+        planar: chain.planar,
+        colliders: &colliders,
+        acceleration: chain.gravity + chain.wind,
+        grid,
+    };
+    let state = &mut chain.state;
+    state.behind += dt;
+    let mut resting = state.resting;
+    while state.behind >= grid - ON_GRID {
+        // The grid's step ends this far into the frame.
+        let into = ((dt - (state.behind - grid)) / dt).clamp(0.0, 1.0);
+        resting = pass.run(state, blend(before, parent, into), grid, true, world);
+        state.behind = (state.behind - grid).max(0.0);
+        if state.behind < ON_GRID {
+            state.behind = 0.0;
+        }
+    }
+    if state.behind > 0.0 {
+        resting = false;
+        pass.run(state, parent, state.behind, false, world);
+    } else if dt == 0.0 {
+        // A frame without time (an app's first): where the tips rest now, for the next step to
+        // move from.
+        pass.run(state, parent, 0.0, true, world);
+    }
+    state.resting = resting;
+    if resting {
+        state.behind = 0.0;
+    }
+    for (joint, &(_, _, rotation)) in state.joints.iter_mut().zip(&state.poses) {
+        if let Ok(mut transform) = world.transforms.get_mut(joint.entity)
+            && transform.rotation != rotation
+        {
+            transform.rotation = rotation;
+        }
+        joint.written = Some(rotation);
+    }
+}
+
+/// The pose a fraction `t` of the way from `a` to `b`.
+fn blend(a: Affine3A, b: Affine3A, t: f32) -> Affine3A {
+    if t >= 1.0 || a == b {
+        return b;
+    }
+    let (sa, ra, ta) = a.to_scale_rotation_translation();
+    let (sb, rb, tb) = b.to_scale_rotation_translation();
+    Affine3A::from_scale_rotation_translation(sa.lerp(sb, t), ra.slerp(rb, t), ta.lerp(tb, t))
+}
+
+/// What every joint's step in a pass shares.
+struct Pass<'a> {
+    end: Option<Vec3>,
+    planar: bool,
+    colliders: &'a [PlacedCollider],
+    acceleration: Vec3,
+    grid: f32,
+}
+
+impl Pass<'_> {
+    /// Steps every joint by `dt` under the chain's parent at `parent`, root to leaf: kept
+    /// (`keep`) or only shown. Leaves each joint's world pose and local rotation in
+    /// `state.poses`, and returns whether every tip rests.
+    fn run(
+        &self,
+        state: &mut ChainState,
+        parent: Affine3A,
+        dt: f32,
+        keep: bool,
+        world: &ChainWorld,
+    ) -> bool {
+        let parent_rotation = parent.to_scale_rotation_translation().1;
+        let mut resting = true;
+        state.poses.clear();
+        for index in 0..state.joints.len() {
+            let joint = &state.joints[index];
+            let Ok(transform) = world.transforms.get(joint.entity).copied() else {
+                state
+                    .poses
+                    .push((Affine3A::IDENTITY, Quat::IDENTITY, joint.rest));
+                continue;
+            };
+            let (above, above_rotation, _) = match joint.parent {
+                Some(up) => state.poses[up],
+                None => (parent, parent_rotation, Quat::IDENTITY),
+            };
+            let tip = match joint.bone {
+                Bone::Child(child) => world
+                    .transforms
+                    .get(state.joints[child].entity)
+                    .ok()
+                    .map(|child| child.translation),
+                Bone::End => self.end,
+                Bone::None => None,
+            };
+            let joint = &mut state.joints[index];
+            if joint.written != Some(transform.rotation) {
+                // Written by something else (an animation, gameplay), or new: its rest pose.
+                joint.rest = transform.rotation;
+                joint.written = Some(transform.rotation);
+            }
+            let rotation = match tip {
+                Some(tip) => {
+                    let swing = Swing {
+                        above,
+                        above_rotation,
+                        local: transform,
+                        tip,
+                        acceleration: self.acceleration * joint.gravity_scale,
+                        colliders: self.colliders,
+                        planar: self.planar,
+                        dt,
+                        cache: dt.to_bits() == self.grid.to_bits(),
+                    };
+                    let (rotation, rests) = swing.step(joint, keep);
+                    resting &= rests;
+                    rotation
+                }
+                None => joint.rest,
+            };
+            let local = Transform {
+                rotation,
+                ..transform
+            };
+            state.poses.push((
+                above * local.compute_affine(),
+                above_rotation * rotation,
+                rotation,
+            ));
+        }
+        resting
+    }
+}
+
+/// One bone's step: what its joint hangs from, where its tip is in its local axes, and what
+/// acts on it.
+struct Swing<'a> {
+    above: Affine3A,
+    above_rotation: Quat,
+    local: Transform,
+    tip: Vec3,
+    acceleration: Vec3,
+    colliders: &'a [PlacedCollider],
+    planar: bool,
+    dt: f32,
+    /// Keep this step's transition for the next (a step of the grid).
+    cache: bool,
+}
+
+impl Swing<'_> {
+    /// Steps `joint`'s tip (kept if `keep`, otherwise only shown) and returns the joint's new
+    /// local rotation, and whether the tip rests.
+    fn step(&self, joint: &mut Joint, keep: bool) -> (Quat, bool) {
+        let rest_local = Transform {
+            rotation: joint.rest,
+            ..self.local
+        };
+        let rest_pose = self.above * rest_local.compute_affine();
+        let origin = Vec3::from(rest_pose.translation);
+        let rest_tip = rest_pose.transform_point3(self.tip);
+        let length = rest_tip.distance(origin);
+        let hangs = joint.hangs(self.acceleration);
+        let moved = joint
+            .rest_tip
+            .map_or(Vec3::ZERO, |before| rest_tip - before);
+        let (mut offset, mut velocity) = self.advance(joint, moved);
+        let touches = self.collide(&mut offset, &mut velocity, origin, rest_tip, length);
+        let omega = joint.spring.natural_frequency().max(1.0);
+        let tolerance = REST * length;
+        // Free, a tip rests where gravity holds it, slow; held by a collider, where it stopped
+        // (the spring still pulls it into the collider, and along its bone, which moves
+        // nothing).
+        let hanging =
+            (offset - hangs).length() <= tolerance && velocity.length() <= tolerance * omega;
+        let held = touches && (offset - joint.offset).length() <= tolerance * omega * self.dt;
+        // A rest place that moved by rounding only (its parent re-posed from the same state)
+        // did not move.
+        let still = moved.length() <= 0.1 * tolerance;
+        let rests = still && (hanging || held);
+        let swing = arc(rest_tip - origin, rest_tip + offset - origin, self.planar);
+        if keep {
+            joint.rest_tip = Some(rest_tip);
+            (joint.offset, joint.velocity) = match (rests, hanging) {
+                (true, true) => (hangs, Vec3::ZERO),
+                (true, false) => (offset, Vec3::ZERO),
+                _ => (offset, velocity),
+            };
+        }
+        // The swing is in the world; turn the rest rotation by it in the joint's own axes.
+        let rest_rotation = self.above_rotation * joint.rest;
+        let turn = rest_rotation.inverse() * swing * rest_rotation;
+        ((joint.rest * turn).normalize(), rests)
+    }
+
+    /// The exact step of the tip's offset from its rest place, which moved by `moved` over the
+    /// step (at a constant rate: a first-order hold), under the constant acceleration.
+    fn advance(&self, joint: &mut Joint, moved: Vec3) -> (Vec3, Vec3) {
+        let dt = self.dt;
+        if dt == 0.0 {
+            return (joint.offset, joint.velocity);
+        }
+        let step = match joint.step {
+            Some(cached) if cached.dt.to_bits() == dt.to_bits() => cached.transition,
+            _ => {
+                let transition = joint.spring.transition(dt);
+                if self.cache {
+                    joint.step = Some(CachedTransition { dt, transition });
+                }
+                transition
+            }
+        };
+        // Relative to the rest place at the end of the step, the tip starts `moved` behind it.
+        let start = SpringState::new(joint.offset - moved, joint.velocity);
+        let stepped = step.step_toward_moving(start, Vec3::ZERO, moved / dt);
+        // The response to the constant acceleration adds to it (the equation is linear).
+        let [[_, f1], _] = step.matrix();
+        let offset = stepped.position + self.acceleration * step.acceleration_gain();
+        let velocity = stepped.velocity + self.acceleration * f1;
+        if offset.is_finite() && velocity.is_finite() {
+            (offset, velocity)
+        } else {
+            warn_once!("bevy_sprung: a SpringChain tip's motion was not finite; put at rest");
+            (joint.hangs(self.acceleration), Vec3::ZERO)
+        }
+    }
+
+    /// Keeps the bone's end out of the colliders: an end inside one turns about the joint, in
+    /// the plane of the bone and the collider, to where the bone's length meets the surface;
+    /// the tip follows, and loses its velocity into the collider. Whether it touched one.
+    fn collide(
+        &self,
+        offset: &mut Vec3,
+        velocity: &mut Vec3,
+        origin: Vec3,
+        rest_tip: Vec3,
+        length: f32,
+    ) -> bool {
+        if self.colliders.is_empty() || length == 0.0 {
+            return false;
+        }
+        let tip = rest_tip + *offset;
+        let Some(mut direction) = (tip - origin).try_normalize() else {
+            return false;
+        };
+        let mut turned = false;
+        // A capsule's nearest point moves as the end turns: a few passes settle it.
+        for _ in 0..COLLIDER_PASSES {
+            for collider in self.colliders {
+                let end = origin + direction * length;
+                let mut centre = collider.nearest(end);
+                if self.planar {
+                    centre.z = origin.z;
+                }
+                let Some(out) = turn_out(origin, direction, length, centre, collider.radius) else {
+                    continue;
+                };
+                direction = out;
+                turned = true;
+                let normal = (origin + direction * length - centre).normalize_or_zero();
+                let into = velocity.dot(normal);
+                if into < 0.0 {
+                    *velocity -= normal * into;
+                }
+            }
+        }
+        if turned {
+            // Held at the bone's length: motion along the bone would move nothing and never
+            // settle.
+            *offset = origin + direction * length - rest_tip;
+            *velocity -= direction * velocity.dot(direction);
+        }
+        turned
+    }
+}
+
+/// The direction nearest `direction` in which a bone of `length` from `origin` ends on the
+/// surface of the ball of `radius` about `centre`, if it ends inside it now; `None` when it
+/// does not, or when the joint itself is inside the ball or the bone cannot leave it.
+fn turn_out(origin: Vec3, direction: Vec3, length: f32, centre: Vec3, radius: f32) -> Option<Vec3> {
+    let to_centre = centre - origin;
+    let distance = to_centre.length();
+    // A joint inside (a joint on the surface, where the bone before it was turned, is not).
+    if distance <= radius * (1.0 - 1e-4) {
+        return None;
+    }
+    // A hair beyond the surface, so that rounding does not leave the end inside.
+    let radius = radius * (1.0 + 1e-5);
+    if (origin + direction * length).distance(centre) >= radius {
+        return None;
+    }
+    let axis = to_centre / distance;
+    // The angle from the axis at which the end meets the surface (law of cosines).
+    let cos = (length * length + distance * distance - radius * radius) / (2.0 * length * distance);
+    if !(-1.0..=1.0).contains(&cos) {
+        return None;
+    }
+    let across = (direction - axis * direction.dot(axis))
+        .try_normalize()
+        .unwrap_or_else(|| axis.any_orthonormal_vector());
+    Some(axis * cos + across * (1.0 - cos * cos).max(0.0).sqrt())
+}
+
+/// The rotation that turns direction `from` onto direction `to` (about z only when `planar`);
+/// the identity where either is zero.
+fn arc(from: Vec3, to: Vec3, planar: bool) -> Quat {
+    if planar {
+        let (from, to) = (from.truncate(), to.truncate());
+        if from == Vec2::ZERO || to == Vec2::ZERO {
+            return Quat::IDENTITY;
+        }
+        return Quat::from_rotation_z(from.angle_to(to));
+    }
+    match (from.try_normalize(), to.try_normalize()) {
+        (Some(from), Some(to)) => Quat::from_rotation_arc(from, to),
+        _ => Quat::IDENTITY,
+    }
+}
