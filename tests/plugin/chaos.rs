@@ -26,7 +26,9 @@ use bevy_sprung::camera::{
     BlendLens, BlendRotation, BlendTranslation, CameraGoal, ConfinerVolume, RigHorizontal,
     RigHorizontalSpring, RigLookAhead, RigOrbit, RigVertical, RigZoom,
 };
+use bevy_sprung::inertia::DragBounds;
 use bevy_sprung::interaction::{DragReleased, InteractionTargets, SpringDrag};
+use bevy_sprung::layers::SpringLayerPlugin;
 use bevy_sprung::prelude::*;
 use bevy_sprung::property::{SpringProperty, ValueOf, VelocityOf};
 use bevy_sprung::transform::Scale;
@@ -142,6 +144,12 @@ trait Chaotic: SpringProperty {
     fn component() -> Self::Component;
     /// Whether every number of a value is finite.
     fn is_finite(value: ValueOf<Self>) -> bool;
+    /// What an entity shows when its spring rests on `target`: the target, with the layers
+    /// the chaos puts on the property.
+    fn shown_at_rest(entity: EntityRef, target: ValueOf<Self>) -> ValueOf<Self> {
+        let _ = entity;
+        target
+    }
 }
 
 /// An ordinary coordinate: mostly hundreds of units, sometimes a big world's or a unit's.
@@ -195,6 +203,11 @@ fn speed(random: &mut Random) -> f32 {
 impl Chaotic for Translation {
     const NAME: &'static str = "translation";
     const KIND: Kind = Kind::Body;
+    fn shown_at_rest(entity: EntityRef, target: Vec3) -> Vec3 {
+        entity
+            .get::<SpringLayers<Translation>>()
+            .map_or(target, |layers| layers.apply(target))
+    }
     fn value(random: &mut Random) -> Vec3 {
         vec3(|| scalar(random))
     }
@@ -243,6 +256,11 @@ impl Chaotic for Rotation {
 }
 
 impl Chaotic for Scale {
+    fn shown_at_rest(entity: EntityRef, target: Vec3) -> Vec3 {
+        entity
+            .get::<SpringLayers<Scale>>()
+            .map_or(target, |layers| layers.apply(target))
+    }
     const NAME: &'static str = "scale";
     const KIND: Kind = Kind::Body;
     fn value(random: &mut Random) -> Vec3 {
@@ -415,12 +433,6 @@ fn draw<T>(world: &mut World, draw: impl FnOnce(&mut Random) -> T) -> T {
     draw(&mut world.resource_mut::<Chaos>().random)
 }
 
-/// Whether `P` is the `Transform`'s scale, which [`SquashStretch`] writes too (the two are not
-/// combined: its docs say so).
-fn is_scale<P: 'static>() -> bool {
-    core::any::TypeId::of::<P>() == core::any::TypeId::of::<Scale>()
-}
-
 /// One of the operations on property `P` of a live entity of its kind.
 #[expect(
     clippy::too_many_lines,
@@ -455,9 +467,6 @@ where
     match operation {
         // Insert, or replace, the spring; now and then with a velocity and on the real clock.
         0 | 1 => {
-            if is_scale::<P>() && entity_mut.contains::<SquashStretch>() {
-                return;
-            }
             let mut new = PropertySpring::<P>::new(parameters, target);
             if operation == 1 {
                 new = new.with_velocity(velocity).with_clock(SpringClock::Real);
@@ -613,6 +622,9 @@ const OPERATIONS: &[(&str, fn(&mut World))] = &[
     ("window", resize_window),
     ("presence", presence),
     ("implicit", implicit),
+    ("layer", layer),
+    ("chain", chain),
+    ("inertia", inertia),
 ];
 
 /// A live entity to operate on (of `kind`, if given), with the operation noted in its story.
@@ -963,6 +975,100 @@ fn implicit(world: &mut World) {
     }
 }
 
+/// A layer of the translation: added with a target (now and then extreme), punched, or
+/// removed mid-flight.
+fn layer(world: &mut World) {
+    let Some(entity) = target_of(world, Some(Kind::Body), "layer") else {
+        return;
+    };
+    let (what, spring, target, kick) = draw(world, |random| {
+        (
+            random.below(3),
+            spring(random),
+            Translation::extreme(random),
+            Translation::velocity(random),
+        )
+    });
+    let mut entity = world.entity_mut(entity);
+    match (
+        what,
+        entity.get_mut::<LayerSpring<Translation, ChaosLayer>>(),
+    ) {
+        (0, _) => {
+            entity.insert(LayerSpring::<Translation, ChaosLayer>::new(spring, target));
+        }
+        (1, Some(mut layer)) => layer.punch(kick),
+        _ => {
+            entity.remove::<LayerSpring<Translation, ChaosLayer>>();
+        }
+    }
+}
+
+/// The layer the chaos springs.
+#[derive(TypePath)]
+struct ChaosLayer;
+
+/// A spring chain on an entity (whatever hangs below it is its joints), with gravity, a
+/// collider and now and then a reset; or removed.
+fn chain(world: &mut World) {
+    let Some(entity) = target_of(world, None, "chain") else {
+        return;
+    };
+    let (what, spring, gravity, collider) = draw(world, |random| {
+        (
+            random.below(4),
+            spring(random),
+            Translation::extreme(random),
+            [0.0, 40.0, 80.0][random.below(3)],
+        )
+    });
+    let collider = world.spawn(ChainCollider::sphere(collider)).id();
+    let mut entity = world.entity_mut(entity);
+    match (what, entity.get_mut::<SpringChain>()) {
+        (0 | 1, _) => {
+            entity.insert(
+                SpringChain::new(spring)
+                    .with_gravity(gravity)
+                    .with_colliders([collider])
+                    .with_teleport_distance(500.0),
+            );
+        }
+        (2, Some(mut chain)) => chain.reset(),
+        _ => {
+            entity.remove::<SpringChain>();
+        }
+    }
+}
+
+/// A fling with `Inertia` (bounded now and then; the velocity now and then extreme).
+fn inertia(world: &mut World) {
+    let Some(entity) = target_of(world, Some(Kind::Body), "inertia") else {
+        return;
+    };
+    let (bounded, deceleration, velocity) = draw(world, |random| {
+        (
+            random.chance(0.5),
+            random.unit() * 5.0,
+            Translation::extreme(random),
+        )
+    });
+    let mut inertia = Inertia::new(deceleration);
+    if bounded {
+        inertia = inertia.bounded(DragBounds {
+            min: Vec3::splat(-200.0),
+            max: Vec3::splat(200.0),
+            give: 50.0,
+        });
+    }
+    let mut entity = world.entity_mut(entity);
+    if !entity.contains::<Inertia>() {
+        entity.insert(inertia);
+    }
+    if let Some(mut inertia) = entity.get_mut::<Inertia>() {
+        inertia.fling(velocity);
+    }
+}
+
 /// A few targets, on settle and timed, delayed (one of them extreme); or removed.
 fn sequence(world: &mut World) {
     let Some(entity) = target_of(world, Some(Kind::Body), "sequence") else {
@@ -1228,7 +1334,9 @@ fn observe<P: Chaotic>(app: &mut App) {
         let other = chaos.random.below(count);
         let other = chaos.entities[other];
         let mut commands = world.commands();
-        commands.entity(entity).insert(Touched);
+        // `try_`: an earlier observer's reaction in the same flush may have queued this entity's
+        // despawn (its event was triggered while it was alive, which is what is asserted).
+        commands.entity(entity).try_insert(Touched);
         match reaction {
             0 => {
                 commands.entity(other).try_despawn();
@@ -1265,7 +1373,7 @@ fn observe_entity_event<E: EntityEvent>(app: &mut App, name: &'static str) {
         let mut chaos = world.resource_mut::<Chaos>();
         chaos.events.push(name);
         if alive {
-            world.commands().entity(entity).insert(Touched);
+            world.commands().entity(entity).try_insert(Touched);
         } else {
             chaos.violation(format!("{name} for despawned {entity}"));
         }
@@ -1302,6 +1410,7 @@ fn chaos_app(seed: u64, plugin: SpringPlugin) -> App {
         frame: 0,
     })
     .insert_resource(Time::<Fixed>::from_hz(50.0))
+    .add_plugins(SpringLayerPlugin::<Translation, ChaosLayer>::default())
     .add_systems(FixedUpdate, walk);
     for_each_property!(observe(&mut app));
     observe_entity_event::<AllSpringsSettled>(&mut app, "all settled");
@@ -1525,10 +1634,11 @@ where
     for (entity, spring, component, asleep) in springs.iter(world) {
         let world: &World = world;
         let value = P::get(component);
+        let shown = P::shown_at_rest(world.entity(entity), spring.target());
         assert!(
-            asleep && value == spring.target(),
+            asleep && value == shown,
             "seed {seed:#x}: the {} spring of {entity} does not rest on its target: asleep \
-             {asleep}, {value:?} vs {:?}, {:?}\n{}",
+             {asleep}, {value:?} vs {:?} (shown with its layers {shown:?}), {:?}\n{}",
             P::NAME,
             spring.target(),
             world.get::<SpringMotion<P>>(entity),

@@ -21,6 +21,7 @@ mod disabling;
 mod first_hour;
 mod follow;
 mod implicit;
+mod inertia;
 mod interaction;
 mod juice;
 mod layers;

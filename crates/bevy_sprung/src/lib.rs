@@ -87,6 +87,7 @@ pub mod control;
 pub mod curve;
 pub mod follow;
 pub mod implicit;
+pub mod inertia;
 #[cfg(feature = "picking")]
 pub mod interaction;
 pub mod juice;
@@ -173,6 +174,7 @@ pub mod prelude {
     pub use crate::color::{SpriteColor, SpriteColorSpring};
     pub use crate::follow::{SpringFollow, TargetMotion};
     pub use crate::implicit::ImplicitSpring;
+    pub use crate::inertia::Inertia;
     #[cfg(feature = "picking")]
     pub use crate::interaction::{
         DragBounds, DragFollow, DragReleased, InteractionState, InteractionTargets, Snap, SnapLine,

@@ -152,6 +152,7 @@ impl Plugin for SpringPlugin {
             JuicePlugin,
             PresencePlugin,
             crate::chain::SpringChainPlugin,
+            crate::inertia::InertiaPlugin,
         ));
         #[cfg(feature = "color")]
         app.add_plugins(crate::color::ColorSpringPlugin);

@@ -204,7 +204,10 @@ fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
                     spring.stiffness() * lerp(gradient.stiffness, depth),
                     spring.damping() * lerp(gradient.damping, depth),
                 );
-                (scaled.unwrap_or(chain.spring), lerp(gradient.gravity, depth))
+                (
+                    scaled.unwrap_or(chain.spring),
+                    lerp(gradient.gravity, depth),
+                )
             };
             let kept = old.iter().find(|kept| kept.entity == joint);
             Joint {

@@ -251,9 +251,20 @@ fn squash_and_stretch(
     }
 }
 
+/// A squash removed mid-deformation: its layer joins the scale, so that nothing jumps.
+fn fold_squash(
+    removed: On<Remove, SquashStretch>,
+    mut bodies: Query<(&mut SpringLayers<Scale>, &mut Transform)>,
+) {
+    if let Ok((mut layers, mut transform)) = bodies.get_mut(removed.entity) {
+        layers.fold::<Squash>(&mut transform);
+    }
+}
+
 pub(super) fn build(app: &mut App) {
     app.register_type::<SquashStretch>()
-        .register_type::<Conserve>();
+        .register_type::<Conserve>()
+        .add_observer(fold_squash);
     crate::layers::add_layered_property::<Scale>(app);
     // With the first squash and stretch.
     let squashes = [core::any::TypeId::of::<SquashStretch>()];

@@ -25,6 +25,8 @@ use core::fmt;
 use core::marker::PhantomData;
 
 use bevy::app::AnimationSystems;
+use bevy::ecs::entity_disabling::Disabled;
+use bevy::ecs::world::DeferredWorld;
 use bevy::log::warn_once;
 use bevy::math::NormedVectorSpace;
 use bevy::prelude::*;
@@ -293,6 +295,7 @@ pub(crate) fn add_layered_property<P: SpringProperty<Space: LayerSpace>>(app: &m
         return;
     }
     app.insert_resource(Added::<P>(PhantomData));
+    app.add_observer(touch_on_return::<P>);
     app.configure_sets(PreUpdate, LayerSystems).configure_sets(
         PostUpdate,
         LayerSystems
@@ -322,11 +325,29 @@ pub(crate) fn add_layered_property<P: SpringProperty<Space: LayerSpace>>(app: &m
     });
 }
 
+/// The stacks to show or take off: those whose layers moved or were shown or taken off since,
+/// and those whose property's component was put back (removed and inserted again).
+type Moved<P> = Or<(
+    Changed<SpringLayers<P>>,
+    Added<<P as SpringProperty>::Component>,
+)>;
+
+/// An entity enabled again (Bevy's `Disabled` removed): the systems did not see its stack
+/// meanwhile, so it is looked at afresh.
+fn touch_on_return<P: SpringProperty<Space: LayerSpace>>(
+    returning: On<Remove, Disabled>,
+    mut world: DeferredWorld,
+) {
+    if let Some(mut layers) = world.get_mut::<SpringLayers<P>>(returning.entity) {
+        layers.set_changed();
+    }
+}
+
 /// `PostUpdate`: shows every stack whose layers moved, or that was taken off since it was last
 /// shown, on its property's base value. Showing the value of the last frame again (layers held
 /// still on a still base) does not mark the property changed: nothing downstream sees a change.
 fn show<P: SpringProperty<Space: LayerSpace>>(
-    mut stacks: Query<(&mut SpringLayers<P>, &mut P::Component), Changed<SpringLayers<P>>>,
+    mut stacks: Query<(&mut SpringLayers<P>, &mut P::Component), Moved<P>>,
 ) {
     for (mut layers, mut component) in &mut stacks {
         let base = P::get(&component);
@@ -358,7 +379,7 @@ fn show<P: SpringProperty<Space: LayerSpace>>(
 /// property since, the base comes back bit for bit; otherwise the layers are taken off what was
 /// written.
 fn take_off<P: SpringProperty<Space: LayerSpace>>(
-    mut stacks: Query<(&mut SpringLayers<P>, &mut P::Component), Changed<SpringLayers<P>>>,
+    mut stacks: Query<(&mut SpringLayers<P>, &mut P::Component), Moved<P>>,
 ) {
     for (mut layers, mut component) in &mut stacks {
         let Some(shown) = layers.shown else {
@@ -366,7 +387,10 @@ fn take_off<P: SpringProperty<Space: LayerSpace>>(
         };
         layers.shown = None;
         let current = P::get(&component);
-        let base = if P::Space::same(current, shown.value) {
+        let base = if component.is_added() {
+            // The component was put back since it was shown: what it holds is a base.
+            current
+        } else if P::Space::same(current, shown.value) {
             shown.base
         } else {
             layers.remove(current)
@@ -386,29 +410,36 @@ fn fold_into_base<P, L>(
     P: SpringProperty<Space: LayerSpace>,
     L: TypePath + Send + Sync + 'static,
 {
-    let Ok((mut layers, mut component)) = stacks.get_mut(removed.entity) else {
-        return;
-    };
-    let Some(offset) = layers.forget(TypeId::of::<L>()) else {
-        return;
-    };
-    match layers.shown {
-        // Shown: the value stays, and the base is what the other layers show as it.
-        Some(shown) => {
-            let base = layers.remove(shown.value);
-            layers.shown = Some(Shown {
-                base,
-                value: shown.value,
-            });
-        }
-        // Taken off (the spring removed between `PreUpdate` and `PostUpdate`): the property
-        // holds the base, which takes the offset.
-        None if offset != LayerOf::<P>::default() => {
-            let value = P::Space::apply(P::get(&component), offset);
-            if P::Space::is_valid(value) {
-                P::set(&mut component, value);
+    if let Ok((mut layers, mut component)) = stacks.get_mut(removed.entity) {
+        layers.fold::<L>(&mut component);
+    }
+}
+
+impl<P: SpringProperty<Space: LayerSpace>> SpringLayers<P> {
+    /// Removes layer `L`, its offset joining the base so that the value shown does not jump
+    /// (what an effect that writes a layer does when it is removed).
+    pub fn fold<L: 'static>(&mut self, component: &mut P::Component) {
+        let Some(offset) = self.forget(TypeId::of::<L>()) else {
+            return;
+        };
+        match self.shown {
+            // Shown: the value stays, and the base is what the other layers show as it.
+            Some(shown) => {
+                let base = self.remove(shown.value);
+                self.shown = Some(Shown {
+                    base,
+                    value: shown.value,
+                });
             }
+            // Taken off (removed between `PreUpdate` and `PostUpdate`): the property holds the
+            // base, which takes the offset.
+            None if offset != LayerOf::<P>::default() => {
+                let value = P::Space::apply(P::get(component), offset);
+                if P::Space::is_valid(value) {
+                    P::set(component, value);
+                }
+            }
+            None => {}
         }
-        None => {}
     }
 }
