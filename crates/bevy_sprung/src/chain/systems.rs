@@ -3,7 +3,6 @@
 
 use bevy::ecs::system::SystemParam;
 use bevy::log::warn_once;
-use bevy::math::Affine3A;
 use bevy::prelude::*;
 use sprung::{Spring, SpringState};
 
@@ -25,14 +24,18 @@ pub(super) struct ChainState {
     pub reset: bool,
     /// Nothing moves: nothing is stepped or written until something does.
     pub resting: bool,
+    /// A joint was not found (despawned, or its `Transform` removed): find them again.
+    lost: bool,
     joints: Vec<Joint>,
     /// The time since the last step of the grid.
     behind: f32,
-    /// Each joint's world pose, world rotation and local rotation after the last pass
-    /// (scratch, kept for its allocation).
-    poses: Vec<(Affine3A, Quat, Quat)>,
+    /// Each joint's `Transform` as others left it this frame, read once (scratch, kept for its
+    /// allocation).
+    locals: Vec<Transform>,
+    /// Each joint's world pose and local rotation after the last pass (scratch).
+    poses: Vec<(Transform, Quat)>,
     /// The world pose of the chain's parent, and the first joint's position, last frame.
-    last_parent: Option<Affine3A>,
+    last_parent: Option<Transform>,
     last_root: Option<Vec3>,
 }
 
@@ -46,6 +49,8 @@ struct Joint {
     /// Where its bone ends: at its one child joint, at the chain's `end`, or nowhere.
     bone: Bone,
     spring: Spring<f32>,
+    /// Its spring's natural frequency (at least 1/s, for the rest test).
+    omega: f32,
     gravity_scale: f32,
     /// Its local rotation as others gave it, and the one the chain last wrote.
     rest: Quat,
@@ -85,7 +90,7 @@ pub(super) struct ChainWorld<'w, 's> {
     transforms: Query<'w, 's, &'static mut Transform>,
     parents: Query<'w, 's, &'static ChildOf>,
     children: Query<'w, 's, &'static Children>,
-    reshaped: Query<'w, 's, (), Changed<Children>>,
+    reshaped: Query<'w, 's, Entity, Changed<Children>>,
     colliders: Query<'w, 's, &'static ChainCollider>,
     joints: Query<'w, 's, &'static ChainJoint>,
 }
@@ -93,26 +98,26 @@ pub(super) struct ChainWorld<'w, 's> {
 impl ChainWorld<'_, '_> {
     /// The world pose of `entity` from the `Transform`s as they are now (not last frame's
     /// `GlobalTransform`): its ancestors may have moved this frame.
-    fn pose_of(&self, entity: Entity) -> Affine3A {
+    fn pose_of(&self, entity: Entity) -> Transform {
         let mut pose = self
             .transforms
             .get(entity)
-            .map_or(Affine3A::IDENTITY, Transform::compute_affine);
+            .map_or(Transform::IDENTITY, |transform| *transform);
         let mut current = entity;
         while let Ok(child_of) = self.parents.get(current) {
             current = child_of.parent();
             if let Ok(transform) = self.transforms.get(current) {
-                pose = transform.compute_affine() * pose;
+                pose = transform.mul_transform(pose);
             }
         }
         pose
     }
 
     /// The pose of the chain's parent (the identity for a chain at the top of its hierarchy).
-    fn parent_pose(&self, chain: Entity) -> Affine3A {
+    fn parent_pose(&self, chain: Entity) -> Transform {
         self.parents
             .get(chain)
-            .map_or(Affine3A::IDENTITY, |child_of| {
+            .map_or(Transform::IDENTITY, |child_of| {
                 self.pose_of(child_of.parent())
             })
     }
@@ -124,36 +129,44 @@ pub(super) fn step_chains(mut chains: Query<(Entity, &mut SpringChain)>, mut wor
     if !(dt >= 0.0 && dt.is_finite()) {
         return;
     }
+    let reshaped: Vec<Entity> = world.reshaped.iter().collect();
     for (entity, mut chain) in &mut chains {
         let configured = chain.is_changed();
         let chain = chain.bypass_change_detection();
-        if configured || needs_rebuild(entity, &chain.state, &world) {
+        if configured || needs_rebuild(entity, &chain.state, &reshaped) {
             rebuild(entity, chain, &world);
         }
         let parent = world.parent_pose(entity);
-        let still = chain.state.last_parent == Some(parent)
-            && !chain.state.reset
-            && !configured
-            && !chain.state.joints.iter().any(|joint| {
-                world
-                    .transforms
-                    .get_mut(joint.entity)
-                    .is_ok_and(|transform| transform.is_changed())
-            });
-        if chain.state.resting && still {
+        let mut still = || {
+            chain.state.last_parent == Some(parent)
+                && !chain.state.reset
+                && !configured
+                && !chain.state.joints.iter().any(|joint| {
+                    world
+                        .transforms
+                        .get_mut(joint.entity)
+                        .is_ok_and(|transform| transform.is_changed())
+                })
+        };
+        if chain.state.resting && still() {
             continue;
         }
         step_chain(chain, parent, dt, &mut world);
     }
 }
 
-/// Whether the chain's joints changed: one despawned, or children added or removed.
-fn needs_rebuild(entity: Entity, state: &ChainState, world: &ChainWorld) -> bool {
+/// Whether the chain's joints changed: one despawned (its `Transform` was not found when the
+/// chain last read it), or children added or removed (`reshaped`: the entities whose children
+/// changed this frame, usually none).
+fn needs_rebuild(entity: Entity, state: &ChainState, reshaped: &[Entity]) -> bool {
     state.joints.is_empty()
-        || world.reshaped.contains(entity)
-        || state.joints.iter().any(|joint| {
-            !world.transforms.contains(joint.entity) || world.reshaped.contains(joint.entity)
-        })
+        || state.lost
+        || (!reshaped.is_empty()
+            && (reshaped.contains(&entity)
+                || state
+                    .joints
+                    .iter()
+                    .any(|joint| reshaped.contains(&joint.entity))))
 }
 
 /// Finds the chain's joints (its entity and every descendant with a `Transform`, parents
@@ -215,6 +228,7 @@ fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
                 parent,
                 bone,
                 spring,
+                omega: spring.natural_frequency().max(1.0),
                 gravity_scale,
                 rest: kept.map_or(Quat::IDENTITY, |kept| kept.rest),
                 written: kept.and_then(|kept| kept.written),
@@ -226,6 +240,7 @@ fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
         })
         .collect();
     chain.state.resting = false;
+    chain.state.lost = false;
 }
 
 /// Time within this of a step of the grid is on it (frame times are whole nanoseconds).
@@ -234,7 +249,7 @@ const ON_GRID: f32 = 1e-6;
 /// One frame of one chain: the whole steps of its grid that the frame passed, root to leaf,
 /// each toward the parent's pose at that step (interpolated over the frame), then the rest of
 /// the frame as a step that is shown and not kept.
-fn step_chain(chain: &mut SpringChain, parent: Affine3A, dt: f32, world: &mut ChainWorld) {
+fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &mut ChainWorld) {
     let colliders: Vec<PlacedCollider> = chain
         .colliders
         .iter()
@@ -243,10 +258,24 @@ fn step_chain(chain: &mut SpringChain, parent: Affine3A, dt: f32, world: &mut Ch
             PlacedCollider::new(*shape, &GlobalTransform::from(world.pose_of(collider)))
         })
         .collect();
-    let root = chain.state.joints.first().and_then(|joint| {
-        let transform = world.transforms.get(joint.entity).ok()?;
-        Some(parent.transform_point3(transform.translation))
-    });
+    // Every joint's `Transform` as the frame left it, read once.
+    let state = &mut chain.state;
+    state.locals.clear();
+    let mut lost = false;
+    state.locals.extend(state.joints.iter().map(|joint| {
+        world.transforms.get(joint.entity).map_or_else(
+            |_| {
+                lost = true;
+                Transform::IDENTITY
+            },
+            |transform| *transform,
+        )
+    }));
+    state.lost = lost;
+    let root = state
+        .locals
+        .first()
+        .map(|local| parent.transform_point(local.translation));
     let teleported = match (root, chain.state.last_root) {
         (Some(now), Some(before)) => now.distance(before) > chain.teleport_distance,
         _ => false,
@@ -286,7 +315,7 @@ fn step_chain(chain: &mut SpringChain, parent: Affine3A, dt: f32, world: &mut Ch
     while state.behind >= grid - ON_GRID {
         // The grid's step ends this far into the frame.
         let into = ((dt - (state.behind - grid)) / dt).clamp(0.0, 1.0);
-        resting = pass.run(state, blend(before, parent, into), grid, true, world);
+        resting = pass.run(state, blend(before, parent, into), grid, true);
         state.behind = (state.behind - grid).max(0.0);
         if state.behind < ON_GRID {
             state.behind = 0.0;
@@ -294,17 +323,17 @@ fn step_chain(chain: &mut SpringChain, parent: Affine3A, dt: f32, world: &mut Ch
     }
     if state.behind > 0.0 {
         resting = false;
-        pass.run(state, parent, state.behind, false, world);
+        pass.run(state, parent, state.behind, false);
     } else if dt == 0.0 {
         // A frame without time (an app's first): where the tips rest now, for the next step to
         // move from.
-        pass.run(state, parent, 0.0, true, world);
+        pass.run(state, parent, 0.0, true);
     }
     state.resting = resting;
     if resting {
         state.behind = 0.0;
     }
-    for (joint, &(_, _, rotation)) in state.joints.iter_mut().zip(&state.poses) {
+    for (joint, &(_, rotation)) in state.joints.iter_mut().zip(&state.poses) {
         if let Ok(mut transform) = world.transforms.get_mut(joint.entity)
             && transform.rotation != rotation
         {
@@ -315,13 +344,15 @@ fn step_chain(chain: &mut SpringChain, parent: Affine3A, dt: f32, world: &mut Ch
 }
 
 /// The pose a fraction `t` of the way from `a` to `b`.
-fn blend(a: Affine3A, b: Affine3A, t: f32) -> Affine3A {
+fn blend(a: Transform, b: Transform, t: f32) -> Transform {
     if t >= 1.0 || a == b {
         return b;
     }
-    let (sa, ra, ta) = a.to_scale_rotation_translation();
-    let (sb, rb, tb) = b.to_scale_rotation_translation();
-    Affine3A::from_scale_rotation_translation(sa.lerp(sb, t), ra.slerp(rb, t), ta.lerp(tb, t))
+    Transform {
+        translation: a.translation.lerp(b.translation, t),
+        rotation: a.rotation.slerp(b.rotation, t),
+        scale: a.scale.lerp(b.scale, t),
+    }
 }
 
 /// What every joint's step in a pass shares.
@@ -337,35 +368,18 @@ impl Pass<'_> {
     /// Steps every joint by `dt` under the chain's parent at `parent`, root to leaf: kept
     /// (`keep`) or only shown. Leaves each joint's world pose and local rotation in
     /// `state.poses`, and returns whether every tip rests.
-    fn run(
-        &self,
-        state: &mut ChainState,
-        parent: Affine3A,
-        dt: f32,
-        keep: bool,
-        world: &ChainWorld,
-    ) -> bool {
-        let parent_rotation = parent.to_scale_rotation_translation().1;
+    fn run(&self, state: &mut ChainState, parent: Transform, dt: f32, keep: bool) -> bool {
         let mut resting = true;
         state.poses.clear();
         for index in 0..state.joints.len() {
             let joint = &state.joints[index];
-            let Ok(transform) = world.transforms.get(joint.entity).copied() else {
-                state
-                    .poses
-                    .push((Affine3A::IDENTITY, Quat::IDENTITY, joint.rest));
-                continue;
-            };
-            let (above, above_rotation, _) = match joint.parent {
-                Some(up) => state.poses[up],
-                None => (parent, parent_rotation, Quat::IDENTITY),
+            let transform = state.locals[index];
+            let above = match joint.parent {
+                Some(up) => state.poses[up].0,
+                None => parent,
             };
             let tip = match joint.bone {
-                Bone::Child(child) => world
-                    .transforms
-                    .get(state.joints[child].entity)
-                    .ok()
-                    .map(|child| child.translation),
+                Bone::Child(child) => Some(state.locals[child].translation),
                 Bone::End => self.end,
                 Bone::None => None,
             };
@@ -375,12 +389,14 @@ impl Pass<'_> {
                 joint.rest = transform.rotation;
                 joint.written = Some(transform.rotation);
             }
-            let rotation = match tip {
+            let rest_pose = above.mul_transform(Transform {
+                rotation: joint.rest,
+                ..transform
+            });
+            let (rotation, pose) = match tip {
                 Some(tip) => {
                     let swing = Swing {
-                        above,
-                        above_rotation,
-                        local: transform,
+                        rest_pose,
                         tip,
                         acceleration: self.acceleration * joint.gravity_scale,
                         colliders: self.colliders,
@@ -388,21 +404,18 @@ impl Pass<'_> {
                         dt,
                         cache: dt.to_bits() == self.grid.to_bits(),
                     };
-                    let (rotation, rests) = swing.step(joint, keep);
+                    let (rotation, world_rotation, rests) = swing.step(joint, keep);
                     resting &= rests;
-                    rotation
+                    // Only the rotation differs from the rest pose: the joint stays in place.
+                    let pose = Transform {
+                        rotation: world_rotation,
+                        ..rest_pose
+                    };
+                    (rotation, pose)
                 }
-                None => joint.rest,
+                None => (joint.rest, rest_pose),
             };
-            let local = Transform {
-                rotation,
-                ..transform
-            };
-            state.poses.push((
-                above * local.compute_affine(),
-                above_rotation * rotation,
-                rotation,
-            ));
+            state.poses.push((pose, rotation));
         }
         resting
     }
@@ -411,9 +424,8 @@ impl Pass<'_> {
 /// One bone's step: what its joint hangs from, where its tip is in its local axes, and what
 /// acts on it.
 struct Swing<'a> {
-    above: Affine3A,
-    above_rotation: Quat,
-    local: Transform,
+    /// The joint's pose with its rest rotation, under its parent's pose this pass.
+    rest_pose: Transform,
     tip: Vec3,
     acceleration: Vec3,
     colliders: &'a [PlacedCollider],
@@ -426,14 +438,10 @@ struct Swing<'a> {
 impl Swing<'_> {
     /// Steps `joint`'s tip (kept if `keep`, otherwise only shown) and returns the joint's new
     /// local rotation, and whether the tip rests.
-    fn step(&self, joint: &mut Joint, keep: bool) -> (Quat, bool) {
-        let rest_local = Transform {
-            rotation: joint.rest,
-            ..self.local
-        };
-        let rest_pose = self.above * rest_local.compute_affine();
-        let origin = Vec3::from(rest_pose.translation);
-        let rest_tip = rest_pose.transform_point3(self.tip);
+    fn step(&self, joint: &mut Joint, keep: bool) -> (Quat, Quat, bool) {
+        let rest_pose = self.rest_pose;
+        let origin = rest_pose.translation;
+        let rest_tip = rest_pose.transform_point(self.tip);
         let length = rest_tip.distance(origin);
         let hangs = joint.hangs(self.acceleration);
         let moved = joint
@@ -441,17 +449,17 @@ impl Swing<'_> {
             .map_or(Vec3::ZERO, |before| rest_tip - before);
         let (mut offset, mut velocity) = self.advance(joint, moved);
         let touches = self.collide(&mut offset, &mut velocity, origin, rest_tip, length);
-        let omega = joint.spring.natural_frequency().max(1.0);
+        let omega = joint.omega;
         let tolerance = REST * length;
+        let within = |v: Vec3, distance: f32| v.length_squared() <= distance * distance;
         // Free, a tip rests where gravity holds it, slow; held by a collider, where it stopped
         // (the spring still pulls it into the collider, and along its bone, which moves
         // nothing).
-        let hanging =
-            (offset - hangs).length() <= tolerance && velocity.length() <= tolerance * omega;
-        let held = touches && (offset - joint.offset).length() <= tolerance * omega * self.dt;
+        let hanging = within(offset - hangs, tolerance) && within(velocity, tolerance * omega);
+        let held = touches && within(offset - joint.offset, tolerance * omega * self.dt);
         // A rest place that moved by rounding only (its parent re-posed from the same state)
         // did not move.
-        let still = moved.length() <= 0.1 * tolerance;
+        let still = within(moved, 0.1 * tolerance);
         let rests = still && (hanging || held);
         let swing = arc(rest_tip - origin, rest_tip + offset - origin, self.planar);
         if keep {
@@ -463,9 +471,13 @@ impl Swing<'_> {
             };
         }
         // The swing is in the world; turn the rest rotation by it in the joint's own axes.
-        let rest_rotation = self.above_rotation * joint.rest;
+        let rest_rotation = rest_pose.rotation;
         let turn = rest_rotation.inverse() * swing * rest_rotation;
-        ((joint.rest * turn).normalize(), rests)
+        (
+            (joint.rest * turn).normalize(),
+            swing * rest_rotation,
+            rests,
+        )
     }
 
     /// The exact step of the tip's offset from its rest place, which moved by `moved` over the

@@ -1,0 +1,266 @@
+//! What secondary motion costs: `cargo bench -p bevy_sprung --bench secondary`.
+//!
+//! Criterion, whole frames of headless apps at 60 fps, each against its alternative measured
+//! in the same run:
+//!
+//! 1. `chain_10k`: 1000 chains of 10 joints (10 000 joints) hanging from bodies that move
+//!    every frame, so every joint swings.
+//!    - `none`: the hierarchy and the moving bodies, no secondary motion (the base);
+//!    - `verlet`: a hand-written Verlet chain, Dynamic Bone's method (inertia from the
+//!      previous position, damping, a pull toward the rest shape, gravity, lengths restored,
+//!      rotations written back), one step a frame;
+//!    - `spring_chain`: a `SpringChain` on each chain (one exact step a frame at 60 fps).
+//! 2. `layers_20k`: 20 000 translation springs in flight, retargeted every 30 frames.
+//!    - `separate`: on 20 000 entities, one spring each;
+//!    - `layered`: on 10 000 entities, a base spring and a layer each.
+
+use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
+use bevy::transform::TransformSystems;
+use bevy_sprung::chain::SpringChain;
+use bevy_sprung::layers::{LayerSpring, SpringLayerPlugin};
+use bevy_sprung::prelude::*;
+use criterion::{Criterion, criterion_group, criterion_main};
+
+const CHAINS: usize = 1000;
+const JOINTS: usize = 10;
+const BONE: f32 = 10.0;
+const GRAVITY: Vec3 = Vec3::new(0.0, -300.0, 0.0);
+
+/// A moving body.
+#[derive(Component)]
+struct Body(f32);
+
+/// The secondary motion a scene has.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Secondary {
+    None,
+    Verlet,
+    SpringChain,
+}
+
+fn headless() -> App {
+    let mut app = App::new();
+    app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugin::default()))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(
+            std::time::Duration::from_secs_f64(1.0 / 60.0),
+        ));
+    app
+}
+
+/// Moves every body on its own circle.
+fn move_bodies(time: Res<Time>, mut bodies: Query<(&Body, &mut Transform)>) {
+    let t = time.elapsed_secs();
+    for (body, mut transform) in &mut bodies {
+        let phase = t * 3.0 + body.0;
+        transform.translation = Vec3::new(phase.cos(), phase.sin(), 0.0) * 40.0;
+    }
+}
+
+fn chain_app(secondary: Secondary) -> App {
+    let mut app = headless();
+    app.add_systems(Update, move_bodies);
+    let world = app.world_mut();
+    let mut verlet = Vec::new();
+    for index in 0..CHAINS {
+        let body = world.spawn((Transform::default(), Body(index as f32))).id();
+        let mut joints = vec![world.spawn(Transform::default()).id()];
+        world.entity_mut(body).add_child(joints[0]);
+        for _ in 1..JOINTS {
+            let joint = world.spawn(Transform::from_xyz(-BONE, 0.0, 0.0)).id();
+            world.entity_mut(*joints.last().unwrap()).add_child(joint);
+            joints.push(joint);
+        }
+        match secondary {
+            Secondary::SpringChain => {
+                world
+                    .entity_mut(joints[0])
+                    .insert(SpringChain::new(Spring::bouncy()).with_gravity(GRAVITY));
+            }
+            Secondary::Verlet => verlet.push(VerletChain::new(body, joints)),
+            Secondary::None => {}
+        }
+    }
+    if secondary == Secondary::Verlet {
+        world.insert_resource(VerletChains(verlet));
+        app.add_systems(PostUpdate, step_verlet.before(TransformSystems::Propagate));
+    }
+    app
+}
+
+/// Dynamic Bone's particle of a joint: where it is, where it was, its rest offset from its
+/// parent joint in the parent's axes.
+struct Particle {
+    entity: Entity,
+    position: Vec3,
+    previous: Vec3,
+    rest: Vec3,
+}
+
+struct VerletChain {
+    body: Entity,
+    particles: Vec<Particle>,
+}
+
+impl VerletChain {
+    fn new(body: Entity, joints: Vec<Entity>) -> Self {
+        let particles = joints
+            .into_iter()
+            .enumerate()
+            .map(|(index, entity)| {
+                let at = Vec3::new(-BONE * index as f32, 0.0, 0.0);
+                Particle {
+                    entity,
+                    position: at,
+                    previous: at,
+                    rest: if index == 0 {
+                        Vec3::ZERO
+                    } else {
+                        Vec3::new(-BONE, 0.0, 0.0)
+                    },
+                }
+            })
+            .collect();
+        Self { body, particles }
+    }
+}
+
+#[derive(Resource)]
+struct VerletChains(Vec<VerletChain>);
+
+/// Dynamic Bone's step, one a frame: Verlet inertia with damping and gravity, a pull toward
+/// the rest shape under the parent's orientation, the bone length restored, and each joint
+/// turned to point at its child.
+fn step_verlet(
+    time: Res<Time>,
+    mut chains: ResMut<VerletChains>,
+    mut transforms: Query<&mut Transform>,
+) {
+    const DAMPING: f32 = 0.1;
+    const STIFFNESS: f32 = 0.1;
+    let dt = time.delta_secs();
+    for chain in &mut chains.0 {
+        let Ok(body) = transforms.get(chain.body).copied() else {
+            continue;
+        };
+        let root = chain.particles[0].entity;
+        let root_local = transforms.get(root).map_or(Transform::IDENTITY, |t| *t);
+        let mut rotation = body.rotation * root_local.rotation;
+        let first = body.transform_point(root_local.translation);
+        chain.particles[0].position = first;
+        chain.particles[0].previous = first;
+        let mut rotations = Vec::with_capacity(chain.particles.len());
+        for index in 1..chain.particles.len() {
+            let parent = chain.particles[index - 1].position;
+            let particle = &mut chain.particles[index];
+            let velocity = particle.position - particle.previous;
+            particle.previous = particle.position;
+            particle.position += velocity * (1.0 - DAMPING) + GRAVITY * dt * dt;
+            let rest = parent + rotation * particle.rest;
+            particle.position += (rest - particle.position) * STIFFNESS;
+            let length = particle.rest.length();
+            let direction = (particle.position - parent).normalize_or_zero();
+            particle.position = parent + direction * length;
+            let swing =
+                Quat::from_rotation_arc((rotation * particle.rest).normalize_or_zero(), direction);
+            rotations.push(swing);
+            rotation = swing * rotation;
+        }
+        let mut parent_rotation = body.rotation;
+        for (index, swing) in rotations.into_iter().enumerate() {
+            let Ok(mut transform) = transforms.get_mut(chain.particles[index].entity) else {
+                continue;
+            };
+            let world = parent_rotation * transform.rotation;
+            let turned = swing * world;
+            transform.rotation = (parent_rotation.inverse() * turned).normalize();
+            parent_rotation = turned;
+        }
+    }
+}
+
+fn chains(c: &mut Criterion) {
+    let mut group = c.benchmark_group("chain_10k");
+    for (name, secondary) in [
+        ("none", Secondary::None),
+        ("verlet", Secondary::Verlet),
+        ("spring_chain", Secondary::SpringChain),
+    ] {
+        let mut app = chain_app(secondary);
+        for _ in 0..30 {
+            app.update();
+        }
+        group.bench_function(name, |b| b.iter(|| app.update()));
+    }
+    group.finish();
+}
+
+#[derive(TypePath)]
+struct Lift;
+
+/// The springs' targets, flipped every 30 frames.
+#[derive(Resource, Default)]
+struct Frame(u32);
+
+fn retarget(
+    mut frame: ResMut<Frame>,
+    mut bases: Query<&mut TranslationSpring>,
+    mut lifts: Query<&mut LayerSpring<Translation, Lift>>,
+) {
+    frame.0 += 1;
+    if !frame.0.is_multiple_of(30) {
+        return;
+    }
+    let sign = if frame.0.is_multiple_of(60) { 1.0 } else { -1.0 };
+    for mut spring in &mut bases {
+        spring.set_target(Vec3::new(100.0 * sign, 0.0, 0.0));
+    }
+    for mut layer in &mut lifts {
+        layer.set_target(Vec3::new(0.0, 20.0 * sign, 0.0));
+    }
+}
+
+fn layers_app(layered: bool) -> App {
+    let mut app = headless();
+    app.add_plugins(SpringLayerPlugin::<Translation, Lift>::default())
+        .init_resource::<Frame>()
+        .add_systems(Update, retarget);
+    let world = app.world_mut();
+    if layered {
+        world.spawn_batch((0..10_000).map(|_| {
+            (
+                Transform::default(),
+                TranslationSpring::new(Spring::smooth(), Vec3::ZERO),
+                LayerSpring::<Translation, Lift>::new(Spring::bouncy(), Vec3::ZERO),
+            )
+        }));
+    } else {
+        world.spawn_batch((0..20_000).map(|index| {
+            let spring = if index % 2 == 0 {
+                Spring::smooth()
+            } else {
+                Spring::bouncy()
+            };
+            (
+                Transform::default(),
+                TranslationSpring::new(spring, Vec3::ZERO),
+            )
+        }));
+    }
+    app
+}
+
+fn layers(c: &mut Criterion) {
+    let mut group = c.benchmark_group("layers_20k");
+    for (name, layered) in [("separate", false), ("layered", true)] {
+        let mut app = layers_app(layered);
+        for _ in 0..30 {
+            app.update();
+        }
+        group.bench_function(name, |b| b.iter(|| app.update()));
+    }
+    group.finish();
+}
+
+criterion_group!(benches, chains, layers);
+criterion_main!(benches);
