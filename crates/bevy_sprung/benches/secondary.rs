@@ -211,7 +211,11 @@ fn retarget(
     if !frame.0.is_multiple_of(30) {
         return;
     }
-    let sign = if frame.0.is_multiple_of(60) { 1.0 } else { -1.0 };
+    let sign = if frame.0.is_multiple_of(60) {
+        1.0
+    } else {
+        -1.0
+    };
     for mut spring in &mut bases {
         spring.set_target(Vec3::new(100.0 * sign, 0.0, 0.0));
     }

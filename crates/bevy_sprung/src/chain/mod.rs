@@ -57,7 +57,7 @@ use crate::spring::{add_systems_on_first_use, first_use};
 ///
 /// fn spawn_tail(mut commands: Commands) {
 ///     // Three segments of 20 px hanging from a body, in 2D.
-///     commands.spawn((Transform::default(), Visibility::default())).with_children(|body| {
+///     commands.spawn(Transform::default()).with_children(|body| {
 ///         body.spawn((
 ///             Transform::from_xyz(-30.0, 0.0, 0.0),
 ///             SpringChain::new(Spring::bouncy())
