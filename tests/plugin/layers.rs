@@ -301,3 +301,55 @@ fn despawned_inside_a_layer_observer() {
     run(&mut app, 240);
     assert!(app.world().get_entity(entity).is_err());
 }
+
+/// `InteractionTargets` on a layer: hovering swells the scale by its own spring, on top of a
+/// base scale spring in flight that it does not bend (the base lands exactly on its target,
+/// and the shown scale is the base times the hover factor).
+#[test]
+fn interaction_targets_drive_a_layer() {
+    use bevy_sprung::interaction::InteractionTargets;
+    use bevy_sprung::layers::Layer;
+    use bevy_sprung::transform::Scale;
+
+    let mut app = layered_app(60);
+    let swell = Vec3::splat(1.2_f32.ln());
+    let card = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            ScaleSpring::new(Spring::smooth(), Vec3::splat(2.0)),
+            LayerSpring::<Scale, Hover>::new(Spring::bouncy(), Vec3::ZERO),
+            InteractionTargets::<Layer<Scale, Hover>>::new(Vec3::ZERO).hovered(swell),
+        ))
+        .id();
+    let alone = app
+        .world_mut()
+        .spawn((
+            Transform::default(),
+            ScaleSpring::new(Spring::smooth(), Vec3::splat(2.0)),
+        ))
+        .id();
+    run(&mut app, 5);
+    crate::interaction::enter(app.world_mut(), card);
+    for _ in 0..240 {
+        app.update();
+        let base = app.world().get::<Transform>(alone).unwrap().scale;
+        let layers = app.world().get::<SpringLayers<Scale>>(card).unwrap();
+        let shown = app.world().get::<Transform>(card).unwrap().scale;
+        assert!(
+            (layers.remove(shown) - base).abs().max_element() < 1e-6,
+            "{shown} over {base}"
+        );
+    }
+    let shown = app.world().get::<Transform>(card).unwrap().scale;
+    assert!(
+        (shown - Vec3::splat(2.4)).abs().max_element() < 1e-5,
+        "{shown}"
+    );
+    crate::interaction::leave(app.world_mut(), card);
+    run(&mut app, 240);
+    assert_eq!(
+        app.world().get::<Transform>(card).unwrap().scale,
+        Vec3::splat(2.0)
+    );
+}
