@@ -222,7 +222,7 @@ impl Inertia {
                 }
                 (rate / fraction, position + reach * fraction)
             }
-            None => (rate, position + velocity / rate),
+            None => (rate, self.rest_position(position, velocity)),
         };
         match self.snap {
             Snap::Free => Throw {
@@ -291,20 +291,26 @@ fn apply_flings(
             inertia.thrown = None;
         }
         if let Some(velocity) = inertia.pending.take() {
-            inertia.start(transform.translation, velocity, &mut spring);
+            let _ = inertia.start(transform.translation, velocity, &mut spring);
         }
     }
 }
 
 impl Inertia {
     /// Throws `spring`'s entity from `position` with `velocity` now, remembering the spring's
-    /// own parameters to give back when the throw ends. A throw whose end is not finite (a
-    /// velocity near `f32::MAX`) is refused, with one warning.
-    pub(crate) fn start(&mut self, position: Vec3, velocity: Vec3, spring: &mut TranslationSpring) {
+    /// own parameters to give back when the throw ends, and returns the throw. A throw whose
+    /// end is not finite (a velocity near `f32::MAX`) is refused, with one warning: the spring
+    /// is left as it was.
+    pub(crate) fn start(
+        &mut self,
+        position: Vec3,
+        velocity: Vec3,
+        spring: &mut TranslationSpring,
+    ) -> Throw {
         let throw = self.throw(position, velocity);
         if !(throw.target.is_finite() && throw.velocity.is_finite()) {
             warn_once!("bevy_sprung: refused an Inertia fling that would end out of f32's range");
-            return;
+            return throw;
         }
         let own = self.thrown.map_or(*spring.spring(), |thrown| thrown.own);
         let coast = (throw.spring.stiffness() == 0.0).then(|| throw.spring.damping());
@@ -316,6 +322,7 @@ impl Inertia {
         spring.set_spring(throw.spring);
         spring.set_target(throw.target);
         spring.set_velocity(throw.velocity);
+        throw
     }
 }
 

@@ -1,4 +1,4 @@
-//! The rubber band of iOS scroll views, shared by drags (`DragBounds`, feature `picking`) and
+//! The rubber band of iOS scroll views, shared by `DragBounds` (drags and inertia) and
 //! momentum scrolling (`MomentumScroll`, feature `ui`).
 
 /// How far past an edge something pulled `excess` past it is shown, with at most `give`:

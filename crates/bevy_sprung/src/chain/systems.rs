@@ -76,6 +76,14 @@ impl Joint {
     }
 }
 
+/// How many child joints a joint has, while the chain is found.
+#[derive(Clone, Copy)]
+enum ChildJoints {
+    None,
+    One(usize),
+    Several,
+}
+
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Bone {
     None,
@@ -192,18 +200,24 @@ fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
         .max()
         .unwrap_or(0)
         .max(1);
+    // Each joint's child joints, in one pass (a joint with one turns toward it).
+    let mut children = vec![ChildJoints::None; found.len()];
+    for (index, &(_, parent, _)) in found.iter().enumerate() {
+        if let Some(parent) = parent {
+            children[parent] = match children[parent] {
+                ChildJoints::None => ChildJoints::One(index),
+                _ => ChildJoints::Several,
+            };
+        }
+    }
     let lerp = |[root, tip]: [f32; 2], depth: f32| root + (tip - root) * depth;
     chain.state.joints = found
         .iter()
         .enumerate()
         .map(|(index, &(joint, parent, depth))| {
-            let mut children = found
-                .iter()
-                .enumerate()
-                .filter(|(_, (_, parent, _))| *parent == Some(index));
-            let bone = match (children.next(), children.next()) {
-                (Some((child, _)), None) => Bone::Child(child),
-                (None, _) if chain.end.is_some() => Bone::End,
+            let bone = match children[index] {
+                ChildJoints::One(child) => Bone::Child(child),
+                ChildJoints::None if chain.end.is_some() => Bone::End,
                 _ => Bone::None,
             };
             let depth = depth as f32 / deepest as f32;

@@ -649,10 +649,10 @@ fn end_drag(
     if let (Ok(mut inertia), Moved::World(spring, _)) = (inertias.get_mut(event.entity), &mut moved)
     {
         // An entity with inertia is thrown: it coasts (or snaps) as its `Inertia` says.
-        inertia.start(position, velocity, spring);
+        let throw = inertia.start(position, velocity, spring);
         (projected, target, snapped) = (
             inertia.rest_position(position, velocity),
-            inertia.throw(position, velocity).target,
+            throw.target,
             None,
         );
     } else {
