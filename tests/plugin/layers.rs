@@ -39,7 +39,7 @@ fn ulp(v: Vec3) -> f32 {
 /// written.
 #[test]
 fn layers_add_up_to_the_separate_springs() {
-    for fps in [30, 60, 144, 240] {
+    for fps in [30, 60, 144, 240, 360] {
         let mut app = layered_app(fps);
         let (from, to) = (
             Vec3::new(-1800.0, 900.0, 0.0),
