@@ -283,8 +283,8 @@ fn the_chain_adds_to_an_animated_pose() {
     assert!(angle(shown, Quat::from_rotation_z(1.0)) < 1e-3, "{shown}");
 }
 
-/// Joints despawned or added mid-swing, even the chain's own entity: no panic, and what is
-/// left keeps swinging and rests.
+/// Joints despawned or added mid-swing, even the chain's own entity: no panic, what is left
+/// keeps swinging and rests, and a joint added is found and swings.
 #[test]
 fn the_hierarchy_changes_under_a_chain() {
     let mut app = app(60);
@@ -313,6 +313,9 @@ fn the_hierarchy_changes_under_a_chain() {
     for rotation in rotations(&app, &joints[..4]) {
         assert!(rotation.is_finite());
     }
+    // The joint given a new child has a bone again: gravity bends it off its rest rotation.
+    let droop = angle(rotations(&app, &joints[3..4])[0], Quat::IDENTITY);
+    assert!(droop > 1e-2, "the new joint's bone does not swing: {droop}");
     app.world_mut().entity_mut(joints[0]).despawn();
     run(&mut app, 5);
 }

@@ -13,14 +13,24 @@
 //! 2. `layers_20k`: 20 000 translation springs in flight, retargeted every 30 frames.
 //!    - `separate`: on 20 000 entities, one spring each;
 //!    - `layered`: on 10 000 entities, a base spring and a layer each.
+//!
+//! `… --bench secondary -- count` (needs `valgrind`) counts the instructions of the chain
+//! scenes' frames under callgrind instead, every schedule on one thread: repeatable figures
+//! on a shared machine. `… -- one SCENE` runs one scene's counted frames (what it runs under
+//! callgrind).
 
+#[path = "support/callgrind.rs"]
+mod callgrind;
+
+use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy::transform::TransformSystems;
 use bevy_sprung::chain::SpringChain;
 use bevy_sprung::layers::{LayerSpring, SpringLayerPlugin};
 use bevy_sprung::prelude::*;
-use criterion::{Criterion, criterion_group, criterion_main};
+use callgrind::callgrind;
+use criterion::{Criterion, criterion_group};
 
 const CHAINS: usize = 1000;
 const JOINTS: usize = 10;
@@ -32,19 +42,49 @@ const GRAVITY: Vec3 = Vec3::new(0.0, -300.0, 0.0);
 struct Body(f32);
 
 /// The secondary motion a scene has.
-#[derive(Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum Secondary {
     None,
     Verlet,
     SpringChain,
 }
 
+impl Secondary {
+    const ALL: [Self; 3] = [Self::None, Self::Verlet, Self::SpringChain];
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::None => "none",
+            Self::Verlet => "verlet",
+            Self::SpringChain => "spring_chain",
+        }
+    }
+}
+
+/// `MinimalPlugins` at 60 fps; with `SPRUNG_BENCH_COMPUTE_THREADS` set (as callgrind runs it),
+/// that many compute threads.
 fn headless() -> App {
+    use bevy::app::{TaskPoolOptions, TaskPoolThreadAssignmentPolicy};
+    let mut task_pool_options = TaskPoolOptions::default();
+    if let Some(threads) = std::env::var("SPRUNG_BENCH_COMPUTE_THREADS")
+        .ok()
+        .and_then(|threads| threads.parse().ok())
+    {
+        task_pool_options.compute = TaskPoolThreadAssignmentPolicy {
+            min_threads: threads,
+            max_threads: threads,
+            ..task_pool_options.compute
+        };
+    }
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugin::default()))
-        .insert_resource(TimeUpdateStrategy::ManualDuration(
-            std::time::Duration::from_secs_f64(1.0 / 60.0),
-        ));
+    app.add_plugins((
+        MinimalPlugins.set(TaskPoolPlugin { task_pool_options }),
+        TransformPlugin,
+        SpringPlugin::default(),
+    ))
+    .insert_resource(TimeUpdateStrategy::ManualDuration(
+        std::time::Duration::from_secs_f64(1.0 / 60.0),
+    ));
     app
 }
 
@@ -181,16 +221,12 @@ fn step_verlet(
 
 fn chains(c: &mut Criterion) {
     let mut group = c.benchmark_group("chain_10k");
-    for (name, secondary) in [
-        ("none", Secondary::None),
-        ("verlet", Secondary::Verlet),
-        ("spring_chain", Secondary::SpringChain),
-    ] {
+    for secondary in Secondary::ALL {
         let mut app = chain_app(secondary);
         for _ in 0..30 {
             app.update();
         }
-        group.bench_function(name, |b| b.iter(|| app.update()));
+        group.bench_function(secondary.name(), |b| b.iter(|| app.update()));
     }
     group.finish();
 }
@@ -267,4 +303,61 @@ fn layers(c: &mut Criterion) {
 }
 
 criterion_group!(benches, chains, layers);
-criterion_main!(benches);
+
+/// Frames counted per chain scene, after as many to warm up.
+const COUNTED_FRAMES: u32 = 10;
+
+/// The frames callgrind counts.
+#[inline(never)]
+fn measured(app: &mut App, frames: u32) {
+    for _ in 0..frames {
+        app.update();
+    }
+}
+
+/// One chain scene's counted frames, every schedule on this thread (callgrind counts only the
+/// thread `measured` runs on; transform propagation's parallel work, the same in every scene,
+/// runs on the one compute thread: with none it never finishes).
+fn one(secondary: Secondary) {
+    let mut app = chain_app(secondary);
+    for (_, schedule) in app.world_mut().resource_mut::<Schedules>().iter_mut() {
+        schedule.set_executor(SingleThreadedExecutor::new());
+    }
+    measured(&mut app, COUNTED_FRAMES);
+    measured(&mut app, COUNTED_FRAMES);
+}
+
+/// Instructions per joint per frame of each chain scene, and the chain's share against
+/// Verlet's (each less the scene without secondary motion).
+fn count() {
+    let per_joint = |secondary: Secondary| {
+        let total = callgrind("*secondary::measured", Some(1), &["one", secondary.name()]);
+        // Half the collected frames are the warm-up's.
+        total as f64 / f64::from(2 * COUNTED_FRAMES) / (CHAINS * JOINTS) as f64
+    };
+    let [none, verlet, chain] = Secondary::ALL.map(per_joint);
+    println!(
+        "chain_10k, instructions per joint per frame: none {none:.0}, verlet {verlet:.0}, \
+         spring_chain {chain:.0}; own share spring_chain / verlet = {:.2}",
+        (chain - none) / (verlet - none)
+    );
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("one") => {
+            let name = args.get(1).map_or("", String::as_str);
+            let secondary = Secondary::ALL
+                .into_iter()
+                .find(|secondary| secondary.name() == name)
+                .unwrap_or_else(|| panic!("no chain scene {name}"));
+            one(secondary);
+        }
+        Some("count") => count(),
+        _ => {
+            benches();
+            Criterion::default().configure_from_args().final_summary();
+        }
+    }
+}

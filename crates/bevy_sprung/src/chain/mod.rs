@@ -11,11 +11,14 @@
 //! animation, your code) is its rest pose, and the chain adds to it.
 
 mod collider;
+mod pose;
 mod systems;
 
 pub use collider::ChainCollider;
 
 use bevy::app::AnimationSystems;
+use bevy::ecs::lifecycle::HookContext;
+use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 use sprung::{Spring, Transition};
@@ -79,7 +82,7 @@ use crate::spring::{add_systems_on_first_use, first_use};
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
-#[component(on_add = first_use::<SpringChain>)]
+#[component(on_add = chain_added)]
 #[require(Transform)]
 #[reflect(Component, Debug, Clone)]
 pub struct SpringChain {
@@ -226,6 +229,31 @@ impl SpringChain {
 struct CachedTransition {
     dt: f32,
     transition: Transition<f32>,
+}
+
+/// Whether the hierarchy changed (a `ChildOf` inserted, discarded or removed anywhere) since the
+/// chains last looked: until it does, they do not look for joints added or removed. Watched
+/// from the first chain on.
+#[derive(Resource)]
+struct Reshaped(bool);
+
+/// The hook of a [`SpringChain`] being added: the first brings in the chain systems and the
+/// watch on the hierarchy.
+fn chain_added(mut world: DeferredWorld, context: HookContext) {
+    first_use::<SpringChain>(world.reborrow(), context);
+    if !world.contains_resource::<Reshaped>() {
+        world.commands().queue(watch_hierarchy);
+    }
+}
+
+/// Sets [`Reshaped`] whenever a `ChildOf` comes or goes (a despawn, a re-parenting).
+fn watch_hierarchy(world: &mut World) {
+    if world.contains_resource::<Reshaped>() {
+        return;
+    }
+    world.insert_resource(Reshaped(true));
+    world.add_observer(|_: On<Insert, ChildOf>, mut reshaped: ResMut<Reshaped>| reshaped.0 = true);
+    world.add_observer(|_: On<Discard, ChildOf>, mut reshaped: ResMut<Reshaped>| reshaped.0 = true);
 }
 
 /// Where chains step: in `PostUpdate`, after animation and the springs (`AnimationSystems`, so

@@ -7,7 +7,8 @@ use bevy::prelude::*;
 use sprung::{Spring, SpringState};
 
 use super::collider::PlacedCollider;
-use super::{CachedTransition, ChainCollider, ChainJoint, SpringChain};
+use super::pose::Pose;
+use super::{CachedTransition, ChainCollider, ChainJoint, Reshaped, SpringChain};
 
 /// Passes over a chain's colliders per bone: a capsule's nearest point moves as the end turns.
 const COLLIDER_PASSES: usize = 3;
@@ -24,6 +25,8 @@ pub(super) struct ChainState {
     pub reset: bool,
     /// Nothing moves: nothing is stepped or written until something does.
     pub resting: bool,
+    /// Stepped this frame: its joints' rotations are to be written.
+    stepping: bool,
     /// A joint was not found (despawned, or its `Transform` removed): find them again.
     lost: bool,
     joints: Vec<Joint>,
@@ -31,9 +34,9 @@ pub(super) struct ChainState {
     behind: f32,
     /// Each joint's `Transform` as others left it this frame, read once (scratch, kept for its
     /// allocation).
-    locals: Vec<Transform>,
+    locals: Vec<Pose>,
     /// Each joint's world pose and local rotation after the last pass (scratch).
-    poses: Vec<(Transform, Quat)>,
+    poses: Vec<(Pose, Quat)>,
     /// The world pose of the chain's parent, and the first joint's position, last frame.
     last_parent: Option<Transform>,
     last_root: Option<Vec3>,
@@ -49,30 +52,29 @@ struct Joint {
     /// Where its bone ends: at its one child joint, at the chain's `end`, or nowhere.
     bone: Bone,
     spring: Spring<f32>,
+    /// How far a unit acceleration holds the tip off its rest place, `m/k` (none without
+    /// stiffness).
+    compliance: f32,
     /// Its spring's natural frequency (at least 1/s, for the rest test).
     omega: f32,
     gravity_scale: f32,
     /// Its local rotation as others gave it, and the one the chain last wrote.
     rest: Quat,
     written: Option<Quat>,
-    /// The tip's offset from its rest place and its velocity, in world units.
-    offset: Vec3,
-    velocity: Vec3,
+    /// The tip's offset from its rest place and its velocity, in world units (`Vec3A`: the
+    /// step's arithmetic is done four lanes at a time).
+    offset: Vec3A,
+    velocity: Vec3A,
     /// Where the tip rested last frame, in the world.
-    rest_tip: Option<Vec3>,
+    rest_tip: Option<Vec3A>,
     step: Option<CachedTransition>,
 }
 
 impl Joint {
     /// Where the spring holds the tip under a constant `acceleration`: `m·a/k` off its rest
     /// place (none without stiffness).
-    fn hangs(&self, acceleration: Vec3) -> Vec3 {
-        let stiffness = self.spring.stiffness();
-        if stiffness > 0.0 {
-            acceleration * (self.spring.mass() / stiffness)
-        } else {
-            Vec3::ZERO
-        }
+    fn hangs(&self, acceleration: Vec3A) -> Vec3A {
+        acceleration * self.compliance
     }
 }
 
@@ -131,22 +133,34 @@ impl ChainWorld<'_, '_> {
     }
 }
 
-/// `PostUpdate`: steps every chain that moves.
-pub(super) fn step_chains(mut chains: Query<(Entity, &mut SpringChain)>, mut world: ChainWorld) {
+/// `PostUpdate`: steps every chain that moves, chains in parallel, and writes their joints.
+pub(super) fn step_chains(
+    mut chains: Query<(Entity, &mut SpringChain)>,
+    mut world: ChainWorld,
+    hierarchy: Option<ResMut<Reshaped>>,
+) {
     let dt = world.time.delta_secs();
     if !(dt >= 0.0 && dt.is_finite()) {
         return;
     }
-    let reshaped: Vec<Entity> = world.reshaped.iter().collect();
+    // Which chains step: change ticks are read here. Whose children changed is looked up only
+    // when the hierarchy did (a scan of every entity with children).
+    let reshaped: Vec<Entity> = match hierarchy {
+        Some(mut hierarchy) if hierarchy.0 => {
+            hierarchy.0 = false;
+            world.reshaped.iter().collect()
+        }
+        Some(_) => Vec::new(),
+        None => world.reshaped.iter().collect(),
+    };
     for (entity, mut chain) in &mut chains {
         let configured = chain.is_changed();
         let chain = chain.bypass_change_detection();
         if configured || needs_rebuild(entity, &chain.state, &reshaped) {
             rebuild(entity, chain, &world);
         }
-        let parent = world.parent_pose(entity);
         let mut still = || {
-            chain.state.last_parent == Some(parent)
+            chain.state.last_parent == Some(world.parent_pose(entity))
                 && !chain.state.reset
                 && !configured
                 && !chain.state.joints.iter().any(|joint| {
@@ -156,10 +170,34 @@ pub(super) fn step_chains(mut chains: Query<(Entity, &mut SpringChain)>, mut wor
                         .is_ok_and(|transform| transform.is_changed())
                 })
         };
-        if chain.state.resting && still() {
-            continue;
+        chain.state.stepping = !(chain.state.resting && still());
+    }
+    // Each chain's step reads the world and changes only the chain.
+    let reader = &world;
+    chains.par_iter_mut().for_each(|(entity, mut chain)| {
+        let chain = chain.bypass_change_detection();
+        if chain.state.stepping {
+            step_chain(chain, reader.parent_pose(entity), dt, reader);
         }
-        step_chain(chain, parent, dt, &mut world);
+    });
+    for (_, mut chain) in &mut chains {
+        let state = &mut chain.bypass_change_detection().state;
+        if state.stepping {
+            write_rotations(state, &mut world.transforms);
+        }
+    }
+}
+
+/// Writes each joint's rotation from the chain's last pass where it differs from the one its
+/// `Transform` has (which the pass left in `written`).
+fn write_rotations(state: &mut ChainState, transforms: &mut Query<&mut Transform>) {
+    for (joint, &(_, rotation)) in state.joints.iter_mut().zip(&state.poses) {
+        if joint.written != Some(rotation) {
+            if let Ok(mut transform) = transforms.get_mut(joint.entity) {
+                transform.rotation = rotation;
+            }
+            joint.written = Some(rotation);
+        }
     }
 }
 
@@ -242,12 +280,17 @@ fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
                 parent,
                 bone,
                 spring,
+                compliance: if spring.stiffness() > 0.0 {
+                    spring.mass() / spring.stiffness()
+                } else {
+                    0.0
+                },
                 omega: spring.natural_frequency().max(1.0),
                 gravity_scale,
                 rest: kept.map_or(Quat::IDENTITY, |kept| kept.rest),
                 written: kept.and_then(|kept| kept.written),
-                offset: kept.map_or(Vec3::ZERO, |kept| kept.offset),
-                velocity: kept.map_or(Vec3::ZERO, |kept| kept.velocity),
+                offset: kept.map_or(Vec3A::ZERO, |kept| kept.offset),
+                velocity: kept.map_or(Vec3A::ZERO, |kept| kept.velocity),
                 rest_tip: kept.and_then(|kept| kept.rest_tip),
                 step: None,
             }
@@ -263,7 +306,7 @@ const ON_GRID: f32 = 1e-6;
 /// One frame of one chain: the whole steps of its grid that the frame passed, root to leaf,
 /// each toward the parent's pose at that step (interpolated over the frame), then the rest of
 /// the frame as a step that is shown and not kept.
-fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &mut ChainWorld) {
+fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &ChainWorld) {
     let colliders: Vec<PlacedCollider> = chain
         .colliders
         .iter()
@@ -277,19 +320,19 @@ fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &mut C
     state.locals.clear();
     let mut lost = false;
     state.locals.extend(state.joints.iter().map(|joint| {
-        world.transforms.get(joint.entity).map_or_else(
+        Pose::from(world.transforms.get(joint.entity).map_or_else(
             |_| {
                 lost = true;
                 Transform::IDENTITY
             },
             |transform| *transform,
-        )
+        ))
     }));
     state.lost = lost;
     let root = state
         .locals
         .first()
-        .map(|local| parent.transform_point(local.translation));
+        .map(|local| parent.transform_point(local.translation.into()));
     let teleported = match (root, chain.state.last_root) {
         (Some(now), Some(before)) => now.distance(before) > chain.teleport_distance,
         _ => false,
@@ -306,8 +349,9 @@ fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &mut C
         for joint in &mut chain.state.joints {
             joint.rest_tip = None;
             if reset {
-                joint.offset = joint.hangs((chain.gravity + chain.wind) * joint.gravity_scale);
-                joint.velocity = Vec3::ZERO;
+                joint.offset =
+                    joint.hangs(Vec3A::from(chain.gravity + chain.wind) * joint.gravity_scale);
+                joint.velocity = Vec3A::ZERO;
             }
         }
     }
@@ -320,20 +364,20 @@ fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &mut C
         end: chain.end,
         planar: chain.planar,
         colliders: &colliders,
-        acceleration: chain.gravity + chain.wind,
+        acceleration: (chain.gravity + chain.wind).into(),
         grid,
     };
     let state = &mut chain.state;
     state.behind += dt;
     let mut resting = state.resting;
     while state.behind >= grid - ON_GRID {
-        // The grid's step ends this far into the frame.
-        let into = ((dt - (state.behind - grid)) / dt).clamp(0.0, 1.0);
+        // What of the frame is left after this step of the grid (none, on the grid), and so
+        // how far into the frame the step ends.
+        let after = (state.behind - grid).max(0.0);
+        let after = if after < ON_GRID { 0.0 } else { after };
+        let into = ((dt - after) / dt).clamp(0.0, 1.0);
         resting = pass.run(state, blend(before, parent, into), grid, true);
-        state.behind = (state.behind - grid).max(0.0);
-        if state.behind < ON_GRID {
-            state.behind = 0.0;
-        }
+        state.behind = after;
     }
     if state.behind > 0.0 {
         resting = false;
@@ -346,14 +390,6 @@ fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &mut C
     state.resting = resting;
     if resting {
         state.behind = 0.0;
-    }
-    for (joint, &(_, rotation)) in state.joints.iter_mut().zip(&state.poses) {
-        if let Ok(mut transform) = world.transforms.get_mut(joint.entity)
-            && transform.rotation != rotation
-        {
-            transform.rotation = rotation;
-        }
-        joint.written = Some(rotation);
     }
 }
 
@@ -374,7 +410,7 @@ struct Pass<'a> {
     end: Option<Vec3>,
     planar: bool,
     colliders: &'a [PlacedCollider],
-    acceleration: Vec3,
+    acceleration: Vec3A,
     grid: f32,
 }
 
@@ -383,29 +419,30 @@ impl Pass<'_> {
     /// (`keep`) or only shown. Leaves each joint's world pose and local rotation in
     /// `state.poses`, and returns whether every tip rests.
     fn run(&self, state: &mut ChainState, parent: Transform, dt: f32, keep: bool) -> bool {
+        let parent = Pose::from(parent);
         let mut resting = true;
         state.poses.clear();
         for index in 0..state.joints.len() {
             let joint = &state.joints[index];
-            let transform = state.locals[index];
+            let local = state.locals[index];
             let above = match joint.parent {
                 Some(up) => state.poses[up].0,
                 None => parent,
             };
             let tip = match joint.bone {
                 Bone::Child(child) => Some(state.locals[child].translation),
-                Bone::End => self.end,
+                Bone::End => self.end.map(Vec3A::from),
                 Bone::None => None,
             };
             let joint = &mut state.joints[index];
-            if joint.written != Some(transform.rotation) {
+            if joint.written != Some(local.rotation) {
                 // Written by something else (an animation, gameplay), or new: its rest pose.
-                joint.rest = transform.rotation;
-                joint.written = Some(transform.rotation);
+                joint.rest = local.rotation;
+                joint.written = Some(local.rotation);
             }
-            let rest_pose = above.mul_transform(Transform {
+            let rest_pose = above.then(Pose {
                 rotation: joint.rest,
-                ..transform
+                ..local
             });
             let (rotation, pose) = match tip {
                 Some(tip) => {
@@ -418,10 +455,13 @@ impl Pass<'_> {
                         dt,
                         cache: dt.to_bits() == self.grid.to_bits(),
                     };
-                    let (rotation, world_rotation, rests) = swing.step(joint, keep);
+                    let (world_rotation, rests) = swing.step(joint, keep);
                     resting &= rests;
+                    // The joint's rotation under its parent's: normalised once here, where it is
+                    // written (a parent's rotation not of unit length only scales the product).
+                    let rotation = (above.rotation.inverse() * world_rotation).normalize();
                     // Only the rotation differs from the rest pose: the joint stays in place.
-                    let pose = Transform {
+                    let pose = Pose {
                         rotation: world_rotation,
                         ..rest_pose
                     };
@@ -439,9 +479,9 @@ impl Pass<'_> {
 /// acts on it.
 struct Swing<'a> {
     /// The joint's pose with its rest rotation, under its parent's pose this pass.
-    rest_pose: Transform,
-    tip: Vec3,
-    acceleration: Vec3,
+    rest_pose: Pose,
+    tip: Vec3A,
+    acceleration: Vec3A,
     colliders: &'a [PlacedCollider],
     planar: bool,
     dt: f32,
@@ -451,52 +491,44 @@ struct Swing<'a> {
 
 impl Swing<'_> {
     /// Steps `joint`'s tip (kept if `keep`, otherwise only shown) and returns the joint's new
-    /// local rotation, and whether the tip rests.
-    fn step(&self, joint: &mut Joint, keep: bool) -> (Quat, Quat, bool) {
+    /// rotation in the world, and whether the tip rests.
+    fn step(&self, joint: &mut Joint, keep: bool) -> (Quat, bool) {
         let rest_pose = self.rest_pose;
         let origin = rest_pose.translation;
-        let rest_tip = rest_pose.transform_point(self.tip);
+        let rest_tip = rest_pose.point(self.tip);
         let length = rest_tip.distance(origin);
         let hangs = joint.hangs(self.acceleration);
         let moved = joint
             .rest_tip
-            .map_or(Vec3::ZERO, |before| rest_tip - before);
+            .map_or(Vec3A::ZERO, |before| rest_tip - before);
         let (mut offset, mut velocity) = self.advance(joint, moved);
         let touches = self.collide(&mut offset, &mut velocity, origin, rest_tip, length);
-        let omega = joint.omega;
-        let tolerance = REST * length;
-        let within = |v: Vec3, distance: f32| v.length_squared() <= distance * distance;
-        // Free, a tip rests where gravity holds it, slow; held by a collider, where it stopped
-        // (the spring still pulls it into the collider, and along its bone, which moves
-        // nothing).
-        let hanging = within(offset - hangs, tolerance) && within(velocity, tolerance * omega);
-        let held = touches && within(offset - joint.offset, tolerance * omega * self.dt);
-        // A rest place that moved by rounding only (its parent re-posed from the same state)
-        // did not move.
-        let still = within(moved, 0.1 * tolerance);
-        let rests = still && (hanging || held);
-        let swing = arc(rest_tip - origin, rest_tip + offset - origin, self.planar);
+        let rest = rest_test(&RestTest {
+            moved,
+            offset,
+            velocity,
+            hangs,
+            kept: joint.offset,
+            touches,
+            tolerance: REST * length,
+            omega: joint.omega,
+            dt: self.dt,
+        });
+        let swing = arc(rest_tip - origin, length, rest_tip + offset - origin, self.planar);
         if keep {
             joint.rest_tip = Some(rest_tip);
-            (joint.offset, joint.velocity) = match (rests, hanging) {
-                (true, true) => (hangs, Vec3::ZERO),
-                (true, false) => (offset, Vec3::ZERO),
-                _ => (offset, velocity),
+            (joint.offset, joint.velocity) = match rest {
+                Rest::Hanging => (hangs, Vec3A::ZERO),
+                Rest::Held => (offset, Vec3A::ZERO),
+                Rest::Moving => (offset, velocity),
             };
         }
-        // The swing is in the world; turn the rest rotation by it in the joint's own axes.
-        let rest_rotation = rest_pose.rotation;
-        let turn = rest_rotation.inverse() * swing * rest_rotation;
-        (
-            (joint.rest * turn).normalize(),
-            swing * rest_rotation,
-            rests,
-        )
+        (swing * rest_pose.rotation, rest != Rest::Moving)
     }
 
     /// The exact step of the tip's offset from its rest place, which moved by `moved` over the
     /// step (at a constant rate: a first-order hold), under the constant acceleration.
-    fn advance(&self, joint: &mut Joint, moved: Vec3) -> (Vec3, Vec3) {
+    fn advance(&self, joint: &mut Joint, moved: Vec3A) -> (Vec3A, Vec3A) {
         let dt = self.dt;
         if dt == 0.0 {
             return (joint.offset, joint.velocity);
@@ -513,7 +545,7 @@ impl Swing<'_> {
         };
         // Relative to the rest place at the end of the step, the tip starts `moved` behind it.
         let start = SpringState::new(joint.offset - moved, joint.velocity);
-        let stepped = step.step_toward_moving(start, Vec3::ZERO, moved / dt);
+        let stepped = step.step_toward_moving(start, Vec3A::ZERO, moved / dt);
         // The response to the constant acceleration adds to it (the equation is linear).
         let [[_, f1], _] = step.matrix();
         let offset = stepped.position + self.acceleration * step.acceleration_gain();
@@ -522,7 +554,7 @@ impl Swing<'_> {
             (offset, velocity)
         } else {
             warn_once!("bevy_sprung: a SpringChain tip's motion was not finite; put at rest");
-            (joint.hangs(self.acceleration), Vec3::ZERO)
+            (joint.hangs(self.acceleration), Vec3A::ZERO)
         }
     }
 
@@ -531,10 +563,10 @@ impl Swing<'_> {
     /// the tip follows, and loses its velocity into the collider. Whether it touched one.
     fn collide(
         &self,
-        offset: &mut Vec3,
-        velocity: &mut Vec3,
-        origin: Vec3,
-        rest_tip: Vec3,
+        offset: &mut Vec3A,
+        velocity: &mut Vec3A,
+        origin: Vec3A,
+        rest_tip: Vec3A,
         length: f32,
     ) -> bool {
         if self.colliders.is_empty() || length == 0.0 {
@@ -549,7 +581,7 @@ impl Swing<'_> {
         for _ in 0..COLLIDER_PASSES {
             for collider in self.colliders {
                 let end = origin + direction * length;
-                let mut centre = collider.nearest(end);
+                let mut centre = Vec3A::from(collider.nearest(end.into()));
                 if self.planar {
                     centre.z = origin.z;
                 }
@@ -575,10 +607,64 @@ impl Swing<'_> {
     }
 }
 
+/// Whether a tip rests after its step, and how.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Rest {
+    Moving,
+    /// Free, where gravity holds it, slow.
+    Hanging,
+    /// Held by a collider where it stopped (the spring still pulls it into the collider, and
+    /// along its bone, which moves nothing).
+    Held,
+}
+
+/// What the rest test of one tip reads.
+struct RestTest {
+    /// How far its rest place moved over the step.
+    moved: Vec3A,
+    /// Its offset from its rest place and its velocity after the step.
+    offset: Vec3A,
+    velocity: Vec3A,
+    /// Where gravity holds it, and where it was before the step.
+    hangs: Vec3A,
+    kept: Vec3A,
+    /// Whether a collider turned it.
+    touches: bool,
+    /// How near is near enough (a fraction of the bone's length), and the spring's natural
+    /// frequency, which turns it into a speed.
+    tolerance: f32,
+    omega: f32,
+    dt: f32,
+}
+
+/// Whether a tip rests: its rest place did not move (or by rounding only: its parent re-posed
+/// from the same state), and it hangs or is held, to within the tolerance.
+fn rest_test(test: &RestTest) -> Rest {
+    let within = |v: Vec3A, distance: f32| v.length_squared() <= distance * distance;
+    let tolerance = test.tolerance;
+    if !within(test.moved, 0.1 * tolerance) {
+        Rest::Moving
+    } else if within(test.offset - test.hangs, tolerance)
+        && within(test.velocity, tolerance * test.omega)
+    {
+        Rest::Hanging
+    } else if test.touches && within(test.offset - test.kept, tolerance * test.omega * test.dt) {
+        Rest::Held
+    } else {
+        Rest::Moving
+    }
+}
+
 /// The direction nearest `direction` in which a bone of `length` from `origin` ends on the
 /// surface of the ball of `radius` about `centre`, if it ends inside it now; `None` when it
 /// does not, or when the joint itself is inside the ball or the bone cannot leave it.
-fn turn_out(origin: Vec3, direction: Vec3, length: f32, centre: Vec3, radius: f32) -> Option<Vec3> {
+fn turn_out(
+    origin: Vec3A,
+    direction: Vec3A,
+    length: f32,
+    centre: Vec3A,
+    radius: f32,
+) -> Option<Vec3A> {
     let to_centre = centre - origin;
     let distance = to_centre.length();
     // A joint inside (a joint on the surface, where the bone before it was turned, is not).
@@ -602,9 +688,9 @@ fn turn_out(origin: Vec3, direction: Vec3, length: f32, centre: Vec3, radius: f3
     Some(axis * cos + across * (1.0 - cos * cos).max(0.0).sqrt())
 }
 
-/// The rotation that turns direction `from` onto direction `to` (about z only when `planar`);
-/// the identity where either is zero.
-fn arc(from: Vec3, to: Vec3, planar: bool) -> Quat {
+/// The shortest rotation that turns direction `from` (of length `from_length`) onto direction
+/// `to` (about z only when `planar`); the identity where either is zero or not finite.
+fn arc(from: Vec3A, from_length: f32, to: Vec3A, planar: bool) -> Quat {
     if planar {
         let (from, to) = (from.truncate(), to.truncate());
         if from == Vec2::ZERO || to == Vec2::ZERO {
@@ -612,8 +698,19 @@ fn arc(from: Vec3, to: Vec3, planar: bool) -> Quat {
         }
         return Quat::from_rotation_z(from.angle_to(to));
     }
-    match (from.try_normalize(), to.try_normalize()) {
-        (Some(from), Some(to)) => Quat::from_rotation_arc(from, to),
-        _ => Quat::IDENTITY,
+    // The half-way form: (from × to, |from||to| + from · to) is the rotation by the angle
+    // between them, scaled by 2|from||to|cos(θ/2), so one normalisation gives it without
+    // normalising the directions first. Its parts have errors of a few ulp of |from||to|, so it
+    // is accurate unless the directions are nearly opposite, where the axis is arbitrary and a
+    // half turn about any axis across `from` is as right as any.
+    let lengths = from_length * to.length();
+    if !(lengths > 0.0 && lengths < f32::INFINITY) {
+        return Quat::IDENTITY;
     }
+    let w = lengths + from.dot(to);
+    if w <= lengths * (2.0 * f32::EPSILON) {
+        let across = from.normalize().any_orthonormal_vector();
+        return Quat::from_xyzw(across.x, across.y, across.z, 0.0);
+    }
+    Quat::from_vec4(from.cross(to).extend(w)).normalize()
 }
