@@ -283,6 +283,65 @@ fn the_chain_adds_to_an_animated_pose() {
     assert!(angle(shown, Quat::from_rotation_z(1.0)) < 1e-3, "{shown}");
 }
 
+/// Joints played by `bevy_animation`, set up as a glTF's skin joints are (an
+/// `AnimationTargetId` and `AnimatedBy` on each, the `AnimationPlayer` on an ancestor): the
+/// clip is the rest pose, and the chain sways on top of it. Half-way through a turn the bone
+/// lags behind the clip's sample (the chain runs after the clip is applied), and after it the
+/// bone settles on the clip's last pose.
+#[test]
+fn the_chain_sways_on_a_clip_played_by_bevy_animation() {
+    use bevy::animation::animation_curves::AnimatableCurve;
+    use bevy::animation::graph::{AnimationGraph, AnimationGraphHandle};
+    use bevy::animation::{
+        AnimatedBy, AnimationClip, AnimationPlayer, AnimationPlugin, AnimationTargetId,
+        animated_field,
+    };
+    let mut app = app(60);
+    app.add_plugins((AssetPlugin::default(), AnimationPlugin));
+    let (body, joints) = spawn_chain(&mut app, SpringChain::new(Spring::bouncy()), 3, 20.0);
+    let played = joints[1];
+    let name = Name::new("bone.001");
+    let target = AnimationTargetId::from_name(&name);
+    let turned = Quat::from_rotation_z(1.0);
+    let turn = EasingCurve::new(Quat::IDENTITY, turned, EaseFunction::Linear);
+    let mut clip = AnimationClip::default();
+    clip.add_curve_to_target(
+        target,
+        AnimatableCurve::new(animated_field!(Transform::rotation), turn.clone()),
+    );
+    let world = app.world_mut();
+    let clip = world.resource_mut::<Assets<AnimationClip>>().add(clip);
+    let (graph, node) = AnimationGraph::from_clip(clip);
+    let graph = world.resource_mut::<Assets<AnimationGraph>>().add(graph);
+    let mut player = AnimationPlayer::default();
+    player.play(node);
+    world
+        .entity_mut(body)
+        .insert((player, AnimationGraphHandle(graph)));
+    world
+        .entity_mut(played)
+        .insert((name, target, AnimatedBy(body)));
+    let length = |app: &App| {
+        let [joint, tip] = [joints[1], joints[2]].map(|joint| positions(app, &[joint])[0]);
+        joint.distance(tip)
+    };
+
+    run(&mut app, 30);
+    let sampled = app
+        .world()
+        .get::<AnimationPlayer>(body)
+        .and_then(|player| player.animation(node))
+        .map(|animation| turn.sample_clamped(animation.seek_time()))
+        .unwrap();
+    let lag = angle(rotations(&app, &[played])[0], sampled);
+    assert!(lag > 0.03, "the bone follows the clip rigidly: {lag} rad");
+    assert!((length(&app) - 20.0).abs() < 20.0 * 1e-5);
+
+    run(&mut app, 240);
+    let settled = angle(rotations(&app, &[played])[0], turned);
+    assert!(settled < 1e-3, "{settled} rad from the clip's last pose");
+}
+
 /// Joints despawned or added mid-swing, even the chain's own entity: no panic, what is left
 /// keeps swinging and rests, and a joint added is found and swings.
 #[test]

@@ -514,7 +514,12 @@ impl Swing<'_> {
             omega: joint.omega,
             dt: self.dt,
         });
-        let swing = arc(rest_tip - origin, length, rest_tip + offset - origin, self.planar);
+        let swing = arc(
+            rest_tip - origin,
+            length,
+            rest_tip + offset - origin,
+            self.planar,
+        );
         if keep {
             joint.rest_tip = Some(rest_tip);
             (joint.offset, joint.velocity) = match rest {
