@@ -25,8 +25,8 @@ pub(super) struct ChainState {
     pub reset: bool,
     /// Nothing moves: nothing is stepped or written until something does.
     pub resting: bool,
-    /// Stepped this frame: its joints' rotations are to be written.
-    stepping: bool,
+    /// Whether it steps this frame (and then its joints' rotations are written).
+    this_frame: ThisFrame,
     /// A joint was not found (despawned, or its `Transform` removed): find them again.
     lost: bool,
     joints: Vec<Joint>,
@@ -40,6 +40,14 @@ pub(super) struct ChainState {
     /// The world pose of the chain's parent, and the first joint's position, last frame.
     last_parent: Option<Transform>,
     last_root: Option<Vec3>,
+}
+
+/// Whether a chain steps this frame.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+enum ThisFrame {
+    #[default]
+    Still,
+    Steps,
 }
 
 /// One joint of a chain.
@@ -170,19 +178,23 @@ pub(super) fn step_chains(
                         .is_ok_and(|transform| transform.is_changed())
                 })
         };
-        chain.state.stepping = !(chain.state.resting && still());
+        chain.state.this_frame = if chain.state.resting && still() {
+            ThisFrame::Still
+        } else {
+            ThisFrame::Steps
+        };
     }
     // Each chain's step reads the world and changes only the chain.
     let reader = &world;
     chains.par_iter_mut().for_each(|(entity, mut chain)| {
         let chain = chain.bypass_change_detection();
-        if chain.state.stepping {
+        if chain.state.this_frame == ThisFrame::Steps {
             step_chain(chain, reader.parent_pose(entity), dt, reader);
         }
     });
     for (_, mut chain) in &mut chains {
         let state = &mut chain.bypass_change_detection().state;
-        if state.stepping {
+        if state.this_frame == ThisFrame::Steps {
             write_rotations(state, &mut world.transforms);
         }
     }
