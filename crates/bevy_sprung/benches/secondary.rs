@@ -21,6 +21,8 @@
 
 #[path = "support/callgrind.rs"]
 mod callgrind;
+#[path = "support/task_pools.rs"]
+mod task_pools;
 
 use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
@@ -61,24 +63,12 @@ impl Secondary {
     }
 }
 
-/// `MinimalPlugins` at 60 fps; with `SPRUNG_BENCH_COMPUTE_THREADS` set (as callgrind runs it),
-/// that many compute threads.
+/// `MinimalPlugins` at 60 fps (with the compute threads `SPRUNG_BENCH_COMPUTE_THREADS` asks
+/// for, as callgrind runs it).
 fn headless() -> App {
-    use bevy::app::{TaskPoolOptions, TaskPoolThreadAssignmentPolicy};
-    let mut task_pool_options = TaskPoolOptions::default();
-    if let Some(threads) = std::env::var("SPRUNG_BENCH_COMPUTE_THREADS")
-        .ok()
-        .and_then(|threads| threads.parse().ok())
-    {
-        task_pool_options.compute = TaskPoolThreadAssignmentPolicy {
-            min_threads: threads,
-            max_threads: threads,
-            ..task_pool_options.compute
-        };
-    }
     let mut app = App::new();
     app.add_plugins((
-        MinimalPlugins.set(TaskPoolPlugin { task_pool_options }),
+        task_pools::minimal_plugins(),
         TransformPlugin,
         SpringPlugin::default(),
     ))

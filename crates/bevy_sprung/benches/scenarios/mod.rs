@@ -12,6 +12,11 @@
     reason = "each bench binary uses a different part of the shared scenarios"
 )]
 
+#[path = "../support/task_pools.rs"]
+mod task_pools;
+
+pub(crate) use task_pools::minimal_plugins;
+
 use core::f32::consts::TAU;
 use core::time::Duration;
 
@@ -90,26 +95,6 @@ pub(crate) fn sprung_spring(half_life: f32) -> Spring {
 pub(crate) fn spring_damper_halflife(half_life: f32) -> f32 {
     let omega = sprung_spring(half_life).natural_frequency();
     2.0 * core::f32::consts::LN_2 / omega - 1e-5
-}
-
-/// `MinimalPlugins`, with as many compute threads as `SPRUNG_BENCH_COMPUTE_THREADS` says (the
-/// task-pool setting `SpringPlugin`'s docs give), or Bevy's default pools. The pools are made
-/// once per process: a run measures one setting.
-#[must_use]
-pub(crate) fn minimal_plugins() -> bevy::app::PluginGroupBuilder {
-    use bevy::app::{TaskPoolOptions, TaskPoolThreadAssignmentPolicy};
-    let threads = std::env::var("SPRUNG_BENCH_COMPUTE_THREADS")
-        .ok()
-        .and_then(|threads| threads.parse::<usize>().ok());
-    let mut task_pool_options = TaskPoolOptions::default();
-    if let Some(threads) = threads {
-        task_pool_options.compute = TaskPoolThreadAssignmentPolicy {
-            min_threads: threads,
-            max_threads: threads,
-            ..task_pool_options.compute
-        };
-    }
-    MinimalPlugins.set(TaskPoolPlugin { task_pool_options })
 }
 
 /// Whether a scene's whole frames propagate transforms, and how.
