@@ -639,26 +639,27 @@ fn end_drag(
     }
     let velocity = drag.state.path.velocity(now);
     let position = moved.position();
-    let (mut projected, mut target, mut snapped) =
-        drag.release_target(position, velocity, active.home);
-    // A world drag moves in the plane facing the camera: the entity keeps its depth (in 2D,
-    // its z, the draw order) whatever the snap point's.
-    if let DragSpace::World { normal, .. } = active.space {
-        target -= normal * (target - position).dot(normal);
-    }
-    if let (Ok(mut inertia), Moved::World(spring, _)) = (inertias.get_mut(event.entity), &mut moved)
+    let (projected, target, snapped) = if let (Ok(mut inertia), Moved::World(spring, _)) =
+        (inertias.get_mut(event.entity), &mut moved)
     {
         // An entity with inertia is thrown: it coasts (or snaps) as its `Inertia` says.
         let throw = inertia.start(position, velocity, spring);
-        (projected, target, snapped) = (
+        (
             inertia.rest_position(position, velocity),
             throw.target,
             None,
-        );
+        )
     } else {
+        let (projected, mut target, snapped) = drag.release_target(position, velocity, active.home);
+        // A world drag moves in the plane facing the camera: the entity keeps its depth (in
+        // 2D, its z, the draw order) whatever the snap point's.
+        if let DragSpace::World { normal, .. } = active.space {
+            target -= normal * (target - position).dot(normal);
+        }
         moved.set_spring(drag.release_spring.unwrap_or(active.spring));
         moved.retarget(target, Some(velocity));
-    }
+        (projected, target, snapped)
+    };
     drag.state.path.clear();
     trigger_if_alive(
         &mut commands,
