@@ -153,13 +153,11 @@ pub(super) fn step_chains(
     }
     // Which chains step: change ticks are read here. Whose children changed is looked up only
     // when the hierarchy did (a scan of every entity with children).
-    let reshaped: Vec<Entity> = match hierarchy {
-        Some(mut hierarchy) if hierarchy.0 => {
-            hierarchy.0 = false;
-            world.reshaped.iter().collect()
-        }
-        Some(_) => Vec::new(),
-        None => world.reshaped.iter().collect(),
+    let hierarchy_changed = hierarchy.is_none_or(|mut hierarchy| core::mem::take(&mut hierarchy.0));
+    let reshaped: Vec<Entity> = if hierarchy_changed {
+        world.reshaped.iter().collect()
+    } else {
+        Vec::new()
     };
     for (entity, mut chain) in &mut chains {
         let configured = chain.is_changed();
@@ -373,7 +371,7 @@ fn step_chain(chain: &mut SpringChain, parent: Transform, dt: f32, world: &Chain
         dt
     };
     let pass = Pass {
-        end: chain.end,
+        end: chain.end.map(Vec3A::from),
         planar: chain.planar,
         colliders: &colliders,
         acceleration: (chain.gravity + chain.wind).into(),
@@ -419,7 +417,7 @@ fn blend(a: Transform, b: Transform, t: f32) -> Transform {
 
 /// What every joint's step in a pass shares.
 struct Pass<'a> {
-    end: Option<Vec3>,
+    end: Option<Vec3A>,
     planar: bool,
     colliders: &'a [PlacedCollider],
     acceleration: Vec3A,
@@ -443,7 +441,7 @@ impl Pass<'_> {
             };
             let tip = match joint.bone {
                 Bone::Child(child) => Some(state.locals[child].translation),
-                Bone::End => self.end.map(Vec3A::from),
+                Bone::End => self.end,
                 Bone::None => None,
             };
             let joint = &mut state.joints[index];
