@@ -8,7 +8,13 @@
 //!    - `none`: the hierarchy and the moving bodies, no secondary motion (the base);
 //!    - `verlet`: a hand-written Verlet chain, Dynamic Bone's method (inertia from the
 //!      previous position, damping, a pull toward the rest shape, gravity, lengths restored,
-//!      rotations written back), one step a frame;
+//!      rotations written back), one step a frame, kept where Dynamic Bone keeps it: in a
+//!      component on the chain's root bone, as a `SpringChain` is. Its rest shape is fixed:
+//!      it reads no bone's `Transform` but the root's, so nothing can animate the bones;
+//!    - `dynamic_bone`: the same, doing all of Dynamic Bone's work of a frame: it reads each
+//!      bone's `Transform` for its rest place and length (so that an animation plays under
+//!      it, as it does under a `SpringChain`) and keeps Dynamic Bone's stiffness limit. The
+//!      chain's budget is set against this one: it does the same job;
 //!    - `spring_chain`: a `SpringChain` on each chain (one exact step a frame at 60 fps).
 //! 2. `layers_20k`: 20 000 translation springs in flight, retargeted every 30 frames.
 //!    - `separate`: on 20 000 entities, one spring each;
@@ -48,16 +54,23 @@ struct Body(f32);
 enum Secondary {
     None,
     Verlet,
+    DynamicBone,
     SpringChain,
 }
 
 impl Secondary {
-    const ALL: [Self; 3] = [Self::None, Self::Verlet, Self::SpringChain];
+    const ALL: [Self; 4] = [
+        Self::None,
+        Self::Verlet,
+        Self::DynamicBone,
+        Self::SpringChain,
+    ];
 
     fn name(self) -> &'static str {
         match self {
             Self::None => "none",
             Self::Verlet => "verlet",
+            Self::DynamicBone => "dynamic_bone",
             Self::SpringChain => "spring_chain",
         }
     }
@@ -91,7 +104,6 @@ fn chain_app(secondary: Secondary) -> App {
     let mut app = headless();
     app.add_systems(Update, move_bodies);
     let world = app.world_mut();
-    let mut verlet = Vec::new();
     for index in 0..CHAINS {
         let body = world.spawn((Transform::default(), Body(index as f32))).id();
         let mut joints = vec![world.spawn(Transform::default()).id()];
@@ -107,12 +119,20 @@ fn chain_app(secondary: Secondary) -> App {
                     .entity_mut(joints[0])
                     .insert(SpringChain::new(Spring::bouncy()).with_gravity(GRAVITY));
             }
-            Secondary::Verlet => verlet.push(VerletChain::new(body, joints)),
+            Secondary::Verlet => {
+                world
+                    .entity_mut(joints[0])
+                    .insert(VerletChain::new(joints, RestShape::Fixed));
+            }
+            Secondary::DynamicBone => {
+                world
+                    .entity_mut(joints[0])
+                    .insert(VerletChain::new(joints, RestShape::Posed));
+            }
             Secondary::None => {}
         }
     }
-    if secondary == Secondary::Verlet {
-        world.insert_resource(VerletChains(verlet));
+    if matches!(secondary, Secondary::Verlet | Secondary::DynamicBone) {
         app.add_systems(PostUpdate, step_verlet.before(TransformSystems::Propagate));
     }
     app
@@ -127,13 +147,26 @@ struct Particle {
     rest: Vec3,
 }
 
+/// Where a Verlet chain's rest shape comes from.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum RestShape {
+    /// The offsets it was built with: nothing poses the bones (no bone's `Transform` is read).
+    Fixed,
+    /// Each bone's `Transform` as the frame left it, read every frame, and Dynamic Bone's
+    /// stiffness limit: what Dynamic Bone does each frame (`UpdateParticles2`), so that an
+    /// animation plays under it, as a `SpringChain` reads every joint's pose.
+    Posed,
+}
+
+/// Dynamic Bone's component on a chain's root bone: the chain's particles, root first.
+#[derive(Component)]
 struct VerletChain {
-    body: Entity,
     particles: Vec<Particle>,
+    shape: RestShape,
 }
 
 impl VerletChain {
-    fn new(body: Entity, joints: Vec<Entity>) -> Self {
+    fn new(joints: Vec<Entity>, shape: RestShape) -> Self {
         let particles = joints
             .into_iter()
             .enumerate()
@@ -151,26 +184,25 @@ impl VerletChain {
                 }
             })
             .collect();
-        Self { body, particles }
+        Self { particles, shape }
     }
 }
 
-#[derive(Resource)]
-struct VerletChains(Vec<VerletChain>);
-
 /// Dynamic Bone's step, one a frame: Verlet inertia with damping and gravity, a pull toward
-/// the rest shape under the parent's orientation, the bone length restored, and each joint
-/// turned to point at its child.
+/// the rest shape under the parent's orientation (of a posed chain: where each bone's
+/// `Transform` puts it, no farther than the stiffness limit), the bone length restored, and
+/// each joint turned to point at its child.
 fn step_verlet(
     time: Res<Time>,
-    mut chains: ResMut<VerletChains>,
+    mut chains: Query<(&mut VerletChain, &ChildOf)>,
     mut transforms: Query<&mut Transform>,
 ) {
     const DAMPING: f32 = 0.1;
+    const ELASTICITY: f32 = 0.1;
     const STIFFNESS: f32 = 0.1;
     let dt = time.delta_secs();
-    for chain in &mut chains.0 {
-        let Ok(body) = transforms.get(chain.body).copied() else {
+    for (mut chain, body) in &mut chains {
+        let Ok(body) = transforms.get(body.parent()).copied() else {
             continue;
         };
         let root = chain.particles[0].entity;
@@ -180,19 +212,34 @@ fn step_verlet(
         chain.particles[0].position = first;
         chain.particles[0].previous = first;
         let mut rotations = Vec::with_capacity(chain.particles.len());
+        let shape = chain.shape;
         for index in 1..chain.particles.len() {
             let parent = chain.particles[index - 1].position;
             let particle = &mut chain.particles[index];
+            let offset = match shape {
+                RestShape::Fixed => particle.rest,
+                RestShape::Posed => transforms
+                    .get(particle.entity)
+                    .map_or(particle.rest, |local| local.translation),
+            };
             let velocity = particle.position - particle.previous;
             particle.previous = particle.position;
             particle.position += velocity * (1.0 - DAMPING) + GRAVITY * dt * dt;
-            let rest = parent + rotation * particle.rest;
-            particle.position += (rest - particle.position) * STIFFNESS;
-            let length = particle.rest.length();
+            let rest = parent + rotation * offset;
+            particle.position += (rest - particle.position) * ELASTICITY;
+            let length = offset.length();
+            if shape == RestShape::Posed {
+                // No farther from the rest place than a share of the bone's length.
+                let away = rest - particle.position;
+                let distance = away.length();
+                let limit = length * (1.0 - STIFFNESS) * 2.0;
+                if distance > limit {
+                    particle.position += away * ((distance - limit) / distance);
+                }
+            }
             let direction = (particle.position - parent).normalize_or_zero();
             particle.position = parent + direction * length;
-            let swing =
-                Quat::from_rotation_arc((rotation * particle.rest).normalize_or_zero(), direction);
+            let swing = Quat::from_rotation_arc((rotation * offset).normalize_or_zero(), direction);
             rotations.push(swing);
             rotation = swing * rotation;
         }
@@ -325,10 +372,12 @@ fn count() {
         // Half the collected frames are the warm-up's.
         total as f64 / f64::from(2 * COUNTED_FRAMES) / (CHAINS * JOINTS) as f64
     };
-    let [none, verlet, chain] = Secondary::ALL.map(per_joint);
+    let [none, verlet, dynamic_bone, chain] = Secondary::ALL.map(per_joint);
     println!(
         "chain_10k, instructions per joint per frame: none {none:.0}, verlet {verlet:.0}, \
-         spring_chain {chain:.0}; own share spring_chain / verlet = {:.2}",
+         dynamic_bone {dynamic_bone:.0}, spring_chain {chain:.0}; own share spring_chain / \
+         dynamic_bone = {:.2}, spring_chain / verlet = {:.2}",
+        (chain - none) / (dynamic_bone - none),
         (chain - none) / (verlet - none)
     );
 }
