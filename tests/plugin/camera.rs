@@ -170,6 +170,120 @@ fn a_constant_velocity_target_is_followed_at_the_analytic_lag_plus_look_ahead() 
 }
 
 #[test]
+fn a_child_of_a_moving_target_is_followed_at_the_same_lag_as_a_root() {
+    const VELOCITY: Vec3 = Vec3::new(240.0, -60.0, 0.0);
+    const AHEAD: f32 = 0.4;
+    const LOCAL: Vec3 = Vec3::new(30.0, 10.0, 0.0);
+    let spring = Spring::from_natural_frequency(4.0, 1.0).unwrap();
+    // The look-ahead is horizontal; the lag is along both axes.
+    let expected =
+        (VELOCITY * AHEAD).with_y(0.0) - VELOCITY * spring.damping() / spring.stiffness();
+    for pattern in patterns() {
+        let (mut app, player) = camera_app(60, (800, 600), |t| {
+            Vec3::new(-500.0, 40.0, 0.0) + VELOCITY * t
+        });
+        // Two levels down: the rig frames the hand, not the player.
+        let arm = app
+            .world_mut()
+            .spawn((Transform::from_xyz(0.0, 5.0, 0.0), ChildOf(player)))
+            .id();
+        let hand = app
+            .world_mut()
+            .spawn((Transform::from_translation(LOCAL), ChildOf(arm)))
+            .id();
+        let camera = app
+            .world_mut()
+            .spawn((
+                camera_2d(CameraRig::new(spring)),
+                CameraTargets::single(hand),
+                LookAhead::new(AHEAD),
+            ))
+            .id();
+        let mut worst: f32 = 0.0;
+        run_pattern(&mut app, &pattern, 6.0, |app, elapsed| {
+            if elapsed > 4.0 {
+                let hand = translation(app, player) + Vec3::new(0.0, 5.0, 0.0) + LOCAL;
+                let offset = translation(app, camera) - hand;
+                worst = worst.max(offset.distance(expected));
+            }
+        });
+        assert!(
+            worst < 5e-3,
+            "{pattern:?}: off the steady state {expected} by {worst}"
+        );
+    }
+}
+
+/// The respawn of a player running right: it is carried 1e5 units at t = 4.5 s.
+const JUMP: Vec3 = Vec3::new(1e5, 0.0, 0.0);
+
+fn running_with_a_respawn(t: f32) -> Vec3 {
+    let carried = if t >= 4.5 { JUMP } else { Vec3::ZERO };
+    Vec3::new(-500.0, 40.0, 0.0) + Vec3::new(240.0, 0.0, 0.0) * t + carried
+}
+
+/// Gameplay tells the rigs of the respawn in the frame it happens.
+fn tell_of_the_respawn(
+    time: Res<Time>,
+    players: Query<Entity, With<Player>>,
+    mut commands: Commands,
+) {
+    let now = time.elapsed_secs();
+    if now >= 4.5 && now - time.delta_secs() < 4.5 {
+        for player in &players {
+            commands.trigger(TargetWarped {
+                entity: player,
+                delta: JUMP,
+            });
+        }
+    }
+}
+
+/// A target carried far in one frame (a respawn), told with `TargetWarped` or caught by the
+/// rig's teleport distance: the camera moves with it, keeping its framing and its velocity;
+/// the look-ahead does not read the jump as speed.
+#[test]
+fn a_teleported_target_carries_the_camera_instead_of_flinging_it() {
+    const AHEAD: f32 = 0.4;
+    let spring = Spring::from_natural_frequency(4.0, 1.0).unwrap();
+    let velocity = Vec3::new(240.0, 0.0, 0.0);
+    let expected = velocity * AHEAD - velocity * spring.damping() / spring.stiffness();
+    for told in [true, false] {
+        for pattern in patterns() {
+            let (mut app, player) = camera_app(60, (800, 600), running_with_a_respawn);
+            if told {
+                app.add_systems(Update, tell_of_the_respawn.after(move_player));
+            }
+            let rig = if told {
+                CameraRig::new(spring)
+            } else {
+                CameraRig::new(spring).with_teleport_distance(5000.0)
+            };
+            let camera = app
+                .world_mut()
+                .spawn((
+                    camera_2d(rig),
+                    CameraTargets::single(player),
+                    LookAhead::new(AHEAD),
+                ))
+                .id();
+            let mut worst: f32 = 0.0;
+            run_pattern(&mut app, &pattern, 7.0, |app, elapsed| {
+                if elapsed > 4.0 {
+                    let offset = translation(app, camera) - translation(app, player);
+                    worst = worst.max(offset.distance(expected));
+                }
+            });
+            // Before and after the jump, at the steady state; f32 at 1e5 resolves 1/128.
+            assert!(
+                worst < 0.05,
+                "told {told}, {pattern:?}: off the steady state {expected} by {worst}"
+            );
+        }
+    }
+}
+
+#[test]
 fn a_goal_of_the_apps_own_gets_the_exact_moving_target_step() {
     fn between(time: Res<Time>, mut goals: Query<&mut CameraGoal>) {
         for mut goal in &mut goals {
@@ -334,6 +448,75 @@ fn the_view_stays_inside_the_confiner_through_zooms_resizes_and_a_hitch() {
         // At the end the camera rests on the right edge... or follows the player inside.
         let centre = translation(&app, camera);
         assert!(centre.is_finite());
+    }
+}
+
+#[test]
+fn the_drawn_view_stays_inside_the_confiner_for_any_viewport_origin_and_scaling_mode() {
+    use bevy::camera::{CameraProjection, ScalingMode};
+    const BOUNDS: Rect = Rect {
+        min: Vec2::new(-1000.0, -400.0),
+        max: Vec2::new(1400.0, 900.0),
+    };
+    let origins = [
+        Vec2::ZERO,
+        Vec2::splat(0.5),
+        Vec2::ONE,
+        Vec2::new(0.25, 0.8),
+    ];
+    let modes = [
+        ScalingMode::WindowSize,
+        ScalingMode::FixedVertical {
+            viewport_height: 500.0,
+        },
+        ScalingMode::AutoMin {
+            min_width: 900.0,
+            min_height: 300.0,
+        },
+    ];
+    for origin in origins {
+        for mode in modes {
+            // The player runs far right, then back left and down, past every edge.
+            let (mut app, player) = camera_app(60, (800, 600), |t| {
+                if t < 4.0 {
+                    Vec3::new(900.0 * t, 100.0, 0.0)
+                } else {
+                    Vec3::new(3600.0 - 1500.0 * (t - 4.0), 100.0 - 400.0 * (t - 4.0), 0.0)
+                }
+            });
+            let projection = OrthographicProjection {
+                viewport_origin: origin,
+                scaling_mode: mode,
+                ..OrthographicProjection::default_2d()
+            };
+            let camera = app
+                .world_mut()
+                .spawn((
+                    Camera2d,
+                    Projection::Orthographic(projection.clone()),
+                    CameraRig::new(Spring::snappy()).with_zoom(0.8),
+                    CameraTargets::single(player),
+                    Confiner::new(BOUNDS).with_slowing_distance(40.0),
+                ))
+                .id();
+            for frame in 0..60 * 8 {
+                app.update();
+                // What Bevy draws: the projection's own area at the rig's zoom.
+                let mut drawn = projection.clone();
+                drawn.scale = 0.8;
+                drawn.update(800.0, 600.0);
+                let at = translation(&app, camera).truncate();
+                let (min, max) = (at + drawn.area.min, at + drawn.area.max);
+                let slack = 1e-3 * BOUNDS.max.x;
+                assert!(
+                    min.x >= BOUNDS.min.x - slack
+                        && min.y >= BOUNDS.min.y - slack
+                        && max.x <= BOUNDS.max.x + slack
+                        && max.y <= BOUNDS.max.y + slack,
+                    "origin {origin}, {mode:?}, frame {frame}: view {min}..{max} outside {BOUNDS:?}"
+                );
+            }
+        }
     }
 }
 

@@ -74,3 +74,89 @@ fn fixed_update_steps_follow_the_fixed_clock() {
     // 90 frames of 1/60 s hold 1.48 s of 64 Hz steps.
     assert!((94..=96).contains(&steps_seen), "{steps_seen} fixed steps");
 }
+
+/// An app whose game clock is paused from the start, every spring on `clock` by default.
+fn paused_app(clock: SpringClock) -> App {
+    let mut app = app_with(60, SpringPlugin::default().with_clock(clock));
+    app.world_mut().resource_mut::<Time<Virtual>>().pause();
+    app
+}
+
+/// A pause menu: five staggered children of a panel, on the real clock, all enter while the
+/// game is paused; on the game clock none of them moves.
+#[test]
+fn a_stagger_counts_on_the_spring_clock() {
+    for clock in [SpringClock::Real, SpringClock::Game] {
+        let mut app = paused_app(clock);
+        let panel = app
+            .world_mut()
+            .spawn((Transform::default(), StaggerChildren::new(0.1)))
+            .id();
+        let items: Vec<Entity> = (0..5)
+            .map(|index| {
+                app.world_mut()
+                    .spawn((
+                        Transform::from_xyz(0.0, index as f32 * 40.0, 0.0),
+                        Presence::default(),
+                        ScaleSpring::new(Spring::snappy(), Vec3::ONE),
+                        EnterFrom::<bevy_sprung::transform::Scale>(Vec3::splat(0.01)),
+                        ChildOf(panel),
+                    ))
+                    .id()
+            })
+            .collect();
+        run(&mut app, 120);
+        for &item in &items {
+            let scale = app.world().get::<Transform>(item).unwrap().scale.x;
+            match clock {
+                SpringClock::Real => assert!((scale - 1.0).abs() < 1e-3, "{item}: {scale}"),
+                SpringClock::Game => assert_eq!(scale, 0.01, "{item} moved while paused"),
+            }
+        }
+    }
+}
+
+/// A shake goes on while the game is paused on the real clock, and holds on the game clock.
+#[test]
+fn a_shake_runs_on_the_spring_clock() {
+    for clock in [SpringClock::Real, SpringClock::Game] {
+        let mut app = paused_app(clock);
+        let mut shake = Shake::new(7).with_max_translation(Vec3::splat(10.0));
+        shake.add_trauma(1.0);
+        let shaken = app.world_mut().spawn((Transform::default(), shake)).id();
+        let mut seen = Vec::new();
+        for _ in 0..30 {
+            app.update();
+            seen.push(translation(&app, shaken));
+        }
+        let moved = seen.windows(2).any(|pair| pair[0] != pair[1]);
+        match clock {
+            SpringClock::Real => assert!(moved, "the shake stood still on the real clock"),
+            SpringClock::Game => assert!(!moved, "the shake moved while the game was paused"),
+        }
+    }
+}
+
+/// A chain sways under gravity while the game is paused on the real clock, and holds its pose
+/// on the game clock.
+#[test]
+fn a_chain_sways_on_the_spring_clock() {
+    use bevy_sprung::chain::SpringChain;
+    for clock in [SpringClock::Real, SpringClock::Game] {
+        let mut app = paused_app(clock);
+        let chain = SpringChain::new(Spring::wobbly()).with_gravity(Vec3::new(0.0, -300.0, 0.0));
+        let root = app.world_mut().spawn((Transform::default(), chain)).id();
+        let joint = app
+            .world_mut()
+            .spawn((Transform::from_xyz(-20.0, 0.0, 0.0), ChildOf(root)))
+            .id();
+        app.world_mut()
+            .spawn((Transform::from_xyz(-20.0, 0.0, 0.0), ChildOf(joint)));
+        run(&mut app, 30);
+        let turned = app.world().get::<Transform>(root).unwrap().rotation != Quat::IDENTITY;
+        match clock {
+            SpringClock::Real => assert!(turned, "the chain hung still on the real clock"),
+            SpringClock::Game => assert!(!turned, "the chain swayed while the game was paused"),
+        }
+    }
+}

@@ -187,3 +187,105 @@ fn a_correct_setup_spawned_in_two_commands_is_told_nothing() {
     });
     assert!(told.is_empty(), "{told:#?}");
 }
+
+#[test]
+fn a_camera_rig_on_no_camera_is_told_once() {
+    let told = warnings(|app| {
+        for _ in 0..2 {
+            app.world_mut()
+                .spawn((Transform::default(), CameraRig::new(Spring::smooth())));
+        }
+    });
+    assert_told_once(&told, &["CameraRig", "Camera or VirtualCamera"]);
+    let told = warnings(|app| {
+        app.world_mut()
+            .spawn((Camera2d, CameraRig::new(Spring::smooth())));
+    });
+    assert!(told.is_empty(), "{told:#?}");
+}
+
+#[test]
+fn an_exit_with_no_spring_to_move_is_told_once() {
+    let told = warnings(|app| {
+        for _ in 0..2 {
+            let toast = app
+                .world_mut()
+                .spawn((
+                    Transform::default(),
+                    Presence::default(),
+                    ExitTo::<Translation>(Vec3::X * 100.0),
+                ))
+                .id();
+            app.world_mut()
+                .commands()
+                .entity(toast)
+                .despawn_after_exit();
+        }
+    });
+    assert_told_once(
+        &told,
+        &["ExitTo<Translation>", "PropertySpring<Translation>"],
+    );
+    let told = warnings(|app| {
+        let toast = app
+            .world_mut()
+            .spawn((
+                Transform::default(),
+                Presence::default(),
+                TranslationSpring::new(Spring::snappy(), Vec3::ZERO),
+                ExitTo::<Translation>(Vec3::X * 100.0),
+            ))
+            .id();
+        app.world_mut()
+            .commands()
+            .entity(toast)
+            .despawn_after_exit();
+    });
+    assert!(told.is_empty(), "{told:#?}");
+}
+
+#[test]
+fn a_chain_with_no_joints_is_told_once() {
+    use bevy_sprung::chain::SpringChain;
+    let told = warnings(|app| {
+        for _ in 0..2 {
+            app.world_mut()
+                .spawn((Transform::default(), SpringChain::new(Spring::wobbly())));
+        }
+    });
+    assert_told_once(&told, &["SpringChain", "child joints", "with_end"]);
+    let told = warnings(|app| {
+        let root = app
+            .world_mut()
+            .spawn((Transform::default(), SpringChain::new(Spring::wobbly())))
+            .id();
+        app.world_mut()
+            .spawn((Transform::from_xyz(-10.0, 0.0, 0.0), ChildOf(root)));
+        app.world_mut().spawn((
+            Transform::default(),
+            SpringChain::new(Spring::wobbly()).with_end(Vec3::X),
+        ));
+    });
+    assert!(told.is_empty(), "{told:#?}");
+}
+
+#[test]
+fn momentum_scroll_on_a_node_that_cannot_scroll_is_told_once() {
+    let told = warnings(|app| {
+        for _ in 0..2 {
+            app.world_mut()
+                .spawn((Node::default(), MomentumScroll::default()));
+        }
+    });
+    assert_told_once(&told, &["MomentumScroll", "Overflow::scroll_y()"]);
+    let told = warnings(|app| {
+        app.world_mut().spawn((
+            Node {
+                overflow: Overflow::scroll_y(),
+                ..default()
+            },
+            MomentumScroll::default(),
+        ));
+    });
+    assert!(told.is_empty(), "{told:#?}");
+}

@@ -141,6 +141,107 @@ fn follows_a_target_moved_every_frame_without_a_frame_of_lag() {
     assert!((position - target - OFFSET).distance(-SPEED * lag) < 1e-3);
 }
 
+/// A target two levels down a hierarchy whose root moves in `Update` (a weapon on a hand on a
+/// player): it is followed at the same steady lag `c·v/k` as a root target, at every frame-time
+/// pattern, not a frame (`v·dt`) behind it.
+#[test]
+fn follows_a_child_of_a_moving_root_without_a_frame_of_lag() {
+    const LOCAL: Vec3 = Vec3::new(1.5, 0.5, 0.0);
+    for pattern in PATTERNS {
+        let mut app = app(60);
+        app.add_systems(Update, move_player);
+        // Root moved by gameplay, a rotated and scaled middle level, the followed leaf.
+        let root = app.world_mut().spawn((Player, Transform::default())).id();
+        let middle = Transform::from_xyz(0.0, 1.0, 0.0)
+            .with_rotation(Quat::from_rotation_y(0.5))
+            .with_scale(Vec3::splat(2.0));
+        let middle = app.world_mut().spawn((middle, ChildOf(root))).id();
+        let leaf = app
+            .world_mut()
+            .spawn((Transform::from_translation(LOCAL), ChildOf(middle)))
+            .id();
+        let spring = Spring::from_natural_frequency(6.0, 1.0).unwrap();
+        let camera = app
+            .world_mut()
+            .spawn((
+                Transform::from_translation(OFFSET),
+                TranslationSpring::new(spring, OFFSET),
+                SpringFollow::new(leaf, OFFSET),
+            ))
+            .id();
+        let lag = spring.damping() / spring.stiffness();
+        let mut worst: f32 = 0.0;
+        run_pattern(&mut app, pattern, 5.0, |app, t| {
+            if t > 3.5 {
+                // Where the leaf is now: its ancestors' transforms as gameplay left them.
+                let world = app.world();
+                let place = |entity| *world.get::<Transform>(entity).unwrap();
+                let target = place(root)
+                    .mul_transform(place(middle))
+                    .transform_point(LOCAL);
+                let position = place(camera).translation;
+                worst = worst.max((position - target - OFFSET).distance(-SPEED * lag));
+            }
+        });
+        assert!(worst < 1e-3, "{pattern:?}: off the steady lag by {worst}");
+    }
+}
+
+/// A target carried 1e4 units in one frame (a respawn), told with `TargetWarped` or caught by
+/// the follower's teleport distance: the follower moves with it and stays at the steady lag,
+/// instead of chasing it across the world.
+#[test]
+fn a_teleported_target_carries_the_follower() {
+    const JUMP: Vec3 = Vec3::new(1e4, 0.0, -5e3);
+    fn respawn(
+        time: Res<Time>,
+        mut players: Query<(Entity, &mut Transform), With<Player>>,
+        mut commands: Commands,
+    ) {
+        let now = time.elapsed_secs();
+        if now >= 3.0 && now - time.delta_secs() < 3.0 {
+            for (player, mut transform) in &mut players {
+                transform.translation += JUMP;
+                commands.trigger(TargetWarped {
+                    entity: player,
+                    delta: JUMP,
+                });
+            }
+        }
+    }
+    for told in [true, false] {
+        let mut app = app(60);
+        app.add_systems(Update, (move_player, respawn).chain());
+        let player = app.world_mut().spawn((Player, Transform::default())).id();
+        let spring = Spring::from_natural_frequency(6.0, 1.0).unwrap();
+        let follow = if told {
+            SpringFollow::new(player, OFFSET)
+        } else {
+            // Without the event the respawn still reaches the follower; only its distance tells.
+            SpringFollow::new(player, OFFSET).with_teleport_distance(1000.0)
+        };
+        let camera = app
+            .world_mut()
+            .spawn((
+                Transform::from_translation(OFFSET),
+                TranslationSpring::new(spring, OFFSET),
+                follow,
+            ))
+            .id();
+        let lag = spring.damping() / spring.stiffness();
+        let mut worst: f32 = 0.0;
+        run_pattern(&mut app, PATTERNS[3], 5.0, |app, t| {
+            if t > 2.0 {
+                let target = app.world().get::<Transform>(player).unwrap().translation;
+                let position = app.world().get::<Transform>(camera).unwrap().translation;
+                worst = worst.max((position - target - OFFSET).distance(-SPEED * lag));
+            }
+        });
+        // f32 at 1e4 resolves 1e-3.
+        assert!(worst < 1e-2, "told {told}: off the steady lag by {worst}");
+    }
+}
+
 /// Looking at the target: the rotation spring turns the follower toward it.
 #[test]
 fn looks_at_the_target() {

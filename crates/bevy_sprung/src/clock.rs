@@ -34,7 +34,9 @@ pub enum SpringClock {
 #[reflect(Resource, Debug, Default, PartialEq, Clone)]
 pub struct DefaultSpringClock(pub SpringClock);
 
-/// The time step of this frame on each clock, for the systems that step springs.
+/// The one source of time in the crate: this frame's step and the elapsed time on each spring
+/// clock. Every timed system reads it (springs, stagger delays, shake, squash, chains, scroll
+/// and drag samples), so a pause menu on [`SpringClock::Real`] moves all of them alike.
 #[derive(SystemParam)]
 pub(crate) struct SpringTime<'w> {
     time: Res<'w, Time>,
@@ -49,6 +51,34 @@ pub(crate) struct SpringTime<'w> {
 pub(crate) struct FrameSteps([f32; 4]);
 
 impl SpringTime<'_> {
+    /// The clock `clock` stands for: itself, or the default clock for `None`.
+    fn resolve(&self, clock: Option<SpringClock>) -> SpringClock {
+        clock.unwrap_or(self.default.0)
+    }
+
+    /// This frame's step on `clock` (`None`: the default clock), in seconds.
+    pub(crate) fn delta(&self, clock: Option<SpringClock>) -> f32 {
+        match self.resolve(clock) {
+            SpringClock::Game => self.time.delta_secs(),
+            SpringClock::Real => self.real.delta_secs(),
+        }
+    }
+
+    /// The seconds elapsed on `clock` (`None`: the default clock).
+    pub(crate) fn elapsed(&self, clock: Option<SpringClock>) -> f64 {
+        match self.resolve(clock) {
+            SpringClock::Game => self.time.elapsed_secs_f64(),
+            SpringClock::Real => self.real.elapsed_secs_f64(),
+        }
+    }
+
+    /// When a pointer sample is taken: the real clock's elapsed seconds. A pointer moves in
+    /// the user's time, so its velocity is measured in it whatever the springs' clock is (the
+    /// fling it starts then moves on the spring's own clock).
+    pub(crate) fn pointer_now(&self) -> f64 {
+        self.elapsed(Some(SpringClock::Real))
+    }
+
     /// The time steps of this frame.
     pub(crate) fn steps(&self) -> FrameSteps {
         let (game, real) = (self.time.delta_secs(), self.real.delta_secs());

@@ -45,6 +45,95 @@ impl FixedSamples {
             None => *self = Self::default(),
         }
     }
+
+    /// The target was carried by `shift` without travelling (a warp) and is at `now`: the
+    /// samples taken before the jump (nearer to it from where it came) move with it, so the
+    /// next velocity taken from them is its motion, not the jump.
+    pub(crate) fn carry_before(&mut self, shift: Vec3, now: Vec3) {
+        for sample in [&mut self.previous, &mut self.latest].into_iter().flatten() {
+            if (*sample + shift).distance_squared(now) < sample.distance_squared(now) {
+                *sample += shift;
+            }
+        }
+    }
+
+    /// The target was carried by `shift` since its last sample: every sample moves with it.
+    pub(crate) fn carry(&mut self, shift: Vec3) {
+        for sample in [&mut self.previous, &mut self.latest].into_iter().flatten() {
+            *sample += shift;
+        }
+    }
+}
+
+/// Triggered on an entity that was moved without travelling — a respawn, a level change, a
+/// portal — by `delta` (Cinemachine's `OnTargetObjectWarped`): every [`SpringFollow`] and camera
+/// rig that follows it moves by its share of the jump at once, keeping its framing and its
+/// velocity, instead of reading the jump as a frame of enormous speed. Trigger it in the frame
+/// of the move, before the springs step (in `Update`, say).
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+///
+/// fn respawn(mut players: Query<(Entity, &mut Transform)>, mut commands: Commands) {
+///     for (player, mut transform) in &mut players {
+///         let spawn_point = Vec3::new(0.0, 2.0, 0.0);
+///         let delta = spawn_point - transform.translation;
+///         transform.translation = spawn_point;
+///         commands.trigger(TargetWarped { entity: player, delta });
+///     }
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Update, respawn);
+/// # app.update();
+/// ```
+#[derive(EntityEvent, Debug, Clone, Copy, PartialEq)]
+pub struct TargetWarped {
+    /// The entity that was moved.
+    pub entity: Entity,
+    /// How far it was moved, in world units.
+    pub delta: Vec3,
+}
+
+/// How far a followed target was carried without travelling between `last` and `now`, having
+/// been expected to travel `expected` (its last velocity times the frame's step): all of the
+/// move beyond that if the move is further than `teleport_distance`, else the explicit warps
+/// `pending` (used up).
+pub(crate) fn take_warp(
+    pending: &mut Vec3,
+    teleport_distance: f32,
+    (last, now): (Option<Vec3>, Vec3),
+    expected: Vec3,
+) -> Warp {
+    let pending = core::mem::take(pending);
+    match last.map(|last| now - last) {
+        Some(moved) if moved.length() > teleport_distance => Warp::Teleported(moved - expected),
+        _ if pending != Vec3::ZERO => Warp::Warped(pending),
+        _ => Warp::None,
+    }
+}
+
+/// What [`take_warp`] found.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Warp {
+    /// The target travelled.
+    None,
+    /// The target was warped by this (told): its motion besides is still measured.
+    Warped(Vec3),
+    /// The target moved further than the teleport distance in one frame: this much of it, all
+    /// but what its last velocity explains, is a jump.
+    Teleported(Vec3),
+}
+
+impl Warp {
+    /// How far the target jumped.
+    pub(crate) fn shift(self) -> Vec3 {
+        match self {
+            Self::None => Vec3::ZERO,
+            Self::Warped(shift) | Self::Teleported(shift) => shift,
+        }
+    }
 }
 
 /// Makes this entity follow `target` with its [`TranslationSpring`], at `offset` from it, and
@@ -54,9 +143,9 @@ impl FixedSamples {
 /// spring is retargeted to the target's position plus `offset`, and given the target's velocity
 /// so the step follows a moving target exactly (the steady lag `c·v/k` is reproduced at any
 /// frame rate, with no jitter from uneven frames). The follower reads the target's `Transform`
-/// in the same frame (no one-frame lag); for a target with a parent the parent's last
-/// `GlobalTransform` places it. The follower itself should be a root entity (its springs move
-/// its local `Transform`).
+/// in the same frame (no one-frame lag), at any depth of its hierarchy: a target under a moving
+/// parent is placed by its ancestors' `Transform`s as they are this frame. The follower itself
+/// should be a root entity (its springs move its local `Transform`).
 ///
 /// When the target goes away (despawned, with its parent or alone, or its `Transform` removed)
 /// the follower comes to rest on its last goal, and sleeps; it follows again if the target comes
@@ -98,6 +187,12 @@ pub struct SpringFollow {
     pub up: Dir3,
     /// How the target moves.
     pub motion: TargetMotion,
+    /// A frame in which the target moves further than this (world units) is a teleport: the
+    /// follower moves with it, keeping its offset and velocity. Infinite (never) by default;
+    /// [`TargetWarped`] says so explicitly.
+    pub teleport_distance: f32,
+    /// Explicit warps of the target not yet applied.
+    warp: Vec3,
     /// Where the target was last frame (`PerFrame`).
     last_frame_position: Option<Vec3>,
     /// The target's last fixed-step positions (`FixedTimestep`).
@@ -116,6 +211,8 @@ impl SpringFollow {
             look_at: None,
             up: Dir3::Y,
             motion: TargetMotion::PerFrame,
+            teleport_distance: f32::INFINITY,
+            warp: Vec3::ZERO,
             last_frame_position: None,
             fixed: FixedSamples::default(),
             current: None,
@@ -135,27 +232,52 @@ impl SpringFollow {
         self.motion = TargetMotion::FixedTimestep;
         self
     }
+
+    /// The same, treating a move of the target further than `distance` in one frame as a
+    /// teleport (see [`teleport_distance`](Self::teleport_distance)).
+    #[must_use]
+    pub fn with_teleport_distance(mut self, distance: f32) -> Self {
+        self.teleport_distance = distance;
+        self
+    }
 }
 
-/// Where entities are in the world: an entity's `Transform`, placed by its parent's last
-/// `GlobalTransform` (this frame's `Transform` of the entity itself, so a target moved in
-/// `Update` is followed with no frame of lag).
+/// A [`TargetWarped`]: every follower of the warped entity takes note, to move with it when
+/// it next follows.
+fn note_warps(warped: On<TargetWarped>, mut followers: Query<&mut SpringFollow>) {
+    if !warped.delta.is_finite() {
+        return;
+    }
+    for mut follow in &mut followers {
+        if follow.target == warped.entity {
+            follow.warp += warped.delta;
+        }
+    }
+}
+
+/// Where entities are in the world, from this frame's `Transform`s: the entity's own and its
+/// ancestors', composed up to the root. Last frame's `GlobalTransform` would put a target
+/// whose parent moved this frame one frame behind; this walk sees every move gameplay made
+/// before the springs step, at any depth of the hierarchy.
 #[derive(SystemParam)]
 pub(crate) struct WorldPositions<'w, 's> {
     transforms: Query<'w, 's, (&'static Transform, Option<&'static ChildOf>)>,
-    globals: Query<'w, 's, &'static GlobalTransform>,
 }
 
 impl WorldPositions<'_, '_> {
-    /// The world position of `entity`, if it has a `Transform`.
+    /// The world position of `entity`, if it has a `Transform`. An ancestor without one ends
+    /// the walk there (Bevy does not propagate through it either).
     pub(crate) fn of(&self, entity: Entity) -> Option<Vec3> {
-        let (transform, parent) = self.transforms.get(entity).ok()?;
-        Some(
-            match parent.and_then(|parent| self.globals.get(parent.parent()).ok()) {
-                Some(parent) => parent.transform_point(transform.translation),
-                None => transform.translation,
-            },
-        )
+        let (transform, mut parent) = self.transforms.get(entity).ok()?;
+        let mut point = transform.translation;
+        while let Some(child_of) = parent {
+            let Ok((transform, grandparent)) = self.transforms.get(child_of.parent()) else {
+                break;
+            };
+            point = transform.transform_point(point);
+            parent = grandparent;
+        }
+        Some(point)
     }
 }
 
@@ -178,7 +300,8 @@ fn follow_targets(
     time: SpringTime,
     fixed_time: Res<Time<Fixed>>,
     mut followers: Query<(Entity, &mut SpringFollow, &mut TranslationSpring)>,
-    positions: WorldPositions,
+    mut world: ParamSet<(WorldPositions, Query<&mut Transform>)>,
+    mut carried: Local<Vec<(Entity, Vec3)>>,
 ) {
     let steps = time.steps();
     for (follower, mut follow, mut spring) in &mut followers {
@@ -190,7 +313,19 @@ fn follow_targets(
         }
         let found = Some(follow.target)
             .filter(|&target| target != follower)
-            .and_then(|target| positions.of(target));
+            .and_then(|target| world.p0().of(target));
+        if let Some(position) = found {
+            let follow = &mut *follow;
+            let expected = spring.target_velocity() * steps.dt(spring.clock());
+            let (last, teleport) = (follow.last_frame_position, follow.teleport_distance);
+            let shift = take_warp(&mut follow.warp, teleport, (last, position), expected).shift();
+            if shift != Vec3::ZERO && shift.is_finite() {
+                // The target was carried, not moved: so is the follower, with its velocity.
+                follow.last_frame_position = last.map(|last| last + shift);
+                follow.fixed.carry_before(shift, position);
+                carried.push((follower, shift));
+            }
+        }
         let sample = match found {
             None => None,
             Some(position) => match follow.motion {
@@ -218,6 +353,14 @@ fn follow_targets(
         // A non-finite target position is refused by the spring (with a warning).
         spring.set_target_if_neq(goal);
         spring.set_target_velocity_if_neq(velocity);
+    }
+    // Followers carried with their targets move before their springs step (which go on from
+    // there, with their velocities).
+    let mut transforms = world.p1();
+    for (follower, shift) in carried.drain(..) {
+        if let Ok(mut transform) = transforms.get_mut(follower) {
+            transform.translation += shift;
+        }
     }
 }
 
@@ -286,7 +429,8 @@ pub struct FollowPlugin;
 impl Plugin for FollowPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<SpringFollow>()
-            .register_type::<TargetMotion>();
+            .register_type::<TargetMotion>()
+            .add_observer(note_warps);
         add_systems_on_first_use(
             app,
             &[TypeId::of::<SpringFollow>()],

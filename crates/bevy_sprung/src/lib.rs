@@ -172,7 +172,7 @@ pub mod prelude {
     pub use crate::color::{BackgroundTint, BorderTint, ImageColorSpring, ImageTint, TextTint};
     #[cfg(feature = "sprite")]
     pub use crate::color::{SpriteColor, SpriteColorSpring};
-    pub use crate::follow::{SpringFollow, TargetMotion};
+    pub use crate::follow::{SpringFollow, TargetMotion, TargetWarped};
     pub use crate::implicit::ImplicitSpring;
     pub use crate::inertia::Inertia;
     #[cfg(feature = "picking")]

@@ -92,6 +92,12 @@ pub struct CameraRig {
     pub hold_vertical: bool,
     /// Turn the camera to look at the point it frames (3D).
     pub look_at_goal: bool,
+    /// A frame in which the goal moves further than this (world units) is a teleport of its
+    /// targets (a respawn, a level change): the camera moves with it, keeping its framing and
+    /// velocity, instead of reading the jump as motion (which would fling a
+    /// [`LookAhead`] far past the target). Infinite (never) by default;
+    /// [`TargetWarped`](crate::follow::TargetWarped) on a target says so explicitly.
+    pub teleport_distance: f32,
 }
 
 /// The hook of a [`CameraRig`] removed: its springs stay (they were required) but nothing
@@ -126,6 +132,7 @@ impl CameraRig {
             zoom: 1.0,
             hold_vertical: false,
             look_at_goal: false,
+            teleport_distance: f32::INFINITY,
         }
     }
 
@@ -161,6 +168,14 @@ impl CameraRig {
     #[must_use]
     pub fn looking_at_goal(mut self) -> Self {
         self.look_at_goal = true;
+        self
+    }
+
+    /// The same rig, treating a move of its goal further than `distance` in one frame as a
+    /// teleport (see [`teleport_distance`](Self::teleport_distance)).
+    #[must_use]
+    pub fn with_teleport_distance(mut self, distance: f32) -> Self {
+        self.teleport_distance = distance;
         self
     }
 }
@@ -214,7 +229,7 @@ pub struct CameraGoal {
 #[derive(Reflect, Debug, Clone, Copy, PartialEq)]
 #[reflect(Debug, Clone, PartialEq)]
 pub struct CameraTarget {
-    /// The entity (its `Transform`, placed by its parent's `GlobalTransform`).
+    /// The entity (its `Transform`, placed by its ancestors' `Transform`s as they are this frame).
     pub entity: Entity,
     /// Its share of the framed point: the point is the weighted centre of the targets. A
     /// weight that is not positive and finite leaves the target out.
@@ -807,4 +822,23 @@ pub(crate) struct RigTracking {
     pub(crate) last_centre: Option<Vec3>,
     /// The zoom the rig aimed for last frame, for its rate.
     pub(crate) last_zoom: Option<f32>,
+    /// Explicit warps of the goal ([`TargetWarped`](crate::follow::TargetWarped) on its
+    /// targets, by their shares) not yet applied.
+    pub(crate) warp: Vec3,
+    /// The goal was carried this frame: the centre keeps last frame's velocity.
+    pub(crate) warped: bool,
+}
+
+impl RigTracking {
+    /// The goal was carried by `shift` without travelling: what the rig remembers of where it
+    /// was moves with it, so that framing is kept and no velocity is read from the jump.
+    pub(crate) fn carry(&mut self, shift: Vec3) {
+        for place in [&mut self.last_point, &mut self.held, &mut self.last_centre]
+            .into_iter()
+            .flatten()
+        {
+            *place += shift;
+        }
+        self.warped = true;
+    }
 }

@@ -35,7 +35,8 @@ pub use occlusion::CameraOcclusion;
 
 use crate::property_plugin::SpringPropertyPlugin;
 use crate::spring::{
-    PropertySpring, PropertySystems, SpringPhase, add_property_systems, add_systems_on_first_use,
+    PropertySpring, PropertySystems, SpringPhase, SpringSystems, add_property_systems,
+    add_systems_on_first_use, spring_schedule, warn_lacking,
 };
 
 /// The stages of a rig's frame in [`SpringUpdate`](crate::spring::SpringUpdate), in this
@@ -87,7 +88,8 @@ impl Plugin for CameraRigPlugin {
         .register_type::<ConfinerVolume>()
         .register_type::<GroupFraming>()
         .register_type::<OrbitRig>()
-        .register_type::<RigMotion>();
+        .register_type::<RigMotion>()
+        .add_observer(systems::note_warps);
         // Targets that move in `FixedUpdate` are sampled after each fixed step.
         add_systems_on_first_use(
             app,
@@ -99,6 +101,23 @@ impl Plugin for CameraRigPlugin {
                 );
             },
         );
+        // A rig on an entity that is neither a camera nor a shot moves a Transform nobody
+        // looks through: told once, where the spawning commands have been applied.
+        let outer = spring_schedule(app);
+        // Every rig requires its horizontal spring, whose first use brings these in.
+        let rigs = [TypeId::of::<PropertySpring<RigHorizontal>>()];
+        add_systems_on_first_use(app, &rigs, outer, |schedule| {
+            schedule.add_systems(
+                warn_lacking::<CameraRig, (Without<Camera>, Without<VirtualCamera>)>(
+                    "Camera or VirtualCamera",
+                    "the rig places this entity's Transform, but nothing renders through it; \
+                     put the CameraRig on a camera (Camera2d, Camera3d) or on a VirtualCamera \
+                     shot",
+                )
+                .before(SpringSystems)
+                .run_if(any_with_component::<CameraRig>),
+            );
+        });
         // Blends come after the shots (rigs) are placed.
         app.add_plugins(blend::CameraBlendPlugin);
         let springs = [TypeId::of::<PropertySpring<RigHorizontal>>()];

@@ -11,9 +11,11 @@ use super::components::{
     LookAhead, OrbitRig, RigHorizontalSpring, RigLookAheadSpring, RigMotion, RigOrbitSpring,
     RigTracking, RigVerticalSpring, RigZoomSpring, ScreenPosition, orbit_rotation,
 };
-use super::view::{centre_range, ease_into, goal_range, half_extents, viewport_size};
+use super::view::{centre_range, ease_into, goal_range, view_area, viewport_size};
 use crate::clock::SpringTime;
-use crate::follow::{FixedSamples, TargetMotion, WorldPositions, fixed_sample};
+use crate::follow::{
+    FixedSamples, TargetMotion, TargetWarped, WorldPositions, fixed_sample, take_warp,
+};
 use crate::spring::SpringTargetMut;
 
 /// After each fixed step: where the targets of rigs whose targets move in `FixedUpdate` are.
@@ -94,10 +96,10 @@ pub(super) struct View {
     projection: Option<&'static Projection>,
 }
 
-/// The half extents of `view` at `zoom`, `distance` being the camera's distance from the
-/// framed point at zoom 1 (perspective).
-fn view_half_extents(view: &ViewItem, window: Option<&Window>, zoom: f32, distance: f32) -> Vec2 {
-    half_extents(
+/// The area `view` covers relative to the camera at `zoom` (see [`view_area`]), `distance`
+/// being the camera's distance from the framed point at zoom 1 (perspective).
+fn camera_view_area(view: &ViewItem, window: Option<&Window>, zoom: f32, distance: f32) -> Rect {
+    view_area(
         view.projection,
         viewport_size(view.camera, window),
         zoom,
@@ -155,6 +157,21 @@ pub(super) fn track_goals(
             continue;
         }
         let dt = steps.dt(rig.zoom.clock());
+        let tracking = &mut *rig.tracking;
+        let shift = take_warp(
+            &mut tracking.warp,
+            rig.rig.teleport_distance,
+            (tracking.last_point, point),
+            tracking.point_velocity * dt,
+        )
+        .shift();
+        if shift != Vec3::ZERO && shift.is_finite() {
+            // The goal was carried: so is the camera, keeping its framing and velocity (the
+            // jump is not motion).
+            tracking.carry(shift);
+            let centre = rig.motion.centre() + shift;
+            rig.motion.set_centre(centre);
+        }
         let velocity = match rig.tracking.last_point {
             Some(last) if dt > 0.0 => (point - last) / dt,
             _ => Vec3::ZERO,
@@ -203,7 +220,7 @@ pub(super) fn track_goals(
             rig.zoom.set_spring(spring);
         }
         let fitted = rig.framing.and_then(|framing| {
-            let half_view = view_half_extents(&rig.view, window, 1.0, distance);
+            let half_view = camera_view_area(&rig.view, window, 1.0, distance).half_size();
             framing.zoom_to_fit(rig.goal.spread, half_view)
         });
         let zoom = fitted.unwrap_or(rig.rig.zoom);
@@ -269,7 +286,8 @@ pub(super) fn frame_goals(
     for mut rig in &mut rigs {
         let zoom = rig.motion.zoom();
         let distance = base_distance(rig.rig, rig.orbit, &rig.motion);
-        let half_view = view_half_extents(&rig.view, window, zoom, distance);
+        let area = camera_view_area(&rig.view, window, zoom, distance);
+        let half_view = area.half_size();
         let point = rig.goal.point + rig.motion.look_ahead();
         if !point.is_finite() {
             rig.hold_goal();
@@ -302,7 +320,7 @@ pub(super) fn frame_goals(
         if let Some(confiner) = rig.confiner {
             // Beyond this the eased camera stands on the edge: a goal further out would only
             // make it wait there before coming back.
-            let range = centre_range(confiner.bounds, half_view);
+            let range = centre_range(confiner.bounds, area);
             let (low, high) = goal_range(range.min.x, range.max.x, confiner.slowing_distance);
             centre.x = centre.x.clamp(low, high);
             let (low, high) = goal_range(range.min.y, range.max.y, confiner.slowing_distance);
@@ -314,7 +332,14 @@ pub(super) fn frame_goals(
         }
 
         let dt = steps.dt(rig.horizontal.clock());
+        let carried = core::mem::take(&mut rig.tracking.warped);
         let velocity = match rig.tracking.last_centre {
+            // Carried this frame: the centre goes on at the velocity it had.
+            Some(_) if carried => Vec3::new(
+                rig.horizontal.target_velocity().x,
+                rig.vertical.target_velocity(),
+                rig.horizontal.target_velocity().y,
+            ),
             Some(last) if dt > 0.0 => (centre - last) / dt,
             _ => Vec3::ZERO,
         };
@@ -379,10 +404,10 @@ impl PosedItem<'_, '_> {
     pub(super) fn pose(&self, motion: &RigMotion, window: Option<&Window>) -> RigPose {
         let zoom = motion.zoom();
         let distance = base_distance(self.rig, self.orbit, motion);
-        let half_view = view_half_extents(&self.view, window, zoom, distance);
+        let area = camera_view_area(&self.view, window, zoom, distance);
         let mut focus = motion.centre();
         if let Some(confiner) = self.confiner {
-            let range = centre_range(confiner.bounds, half_view);
+            let range = centre_range(confiner.bounds, area);
             let slowing = confiner.slowing_distance;
             focus.x = ease_into(focus.x, range.min.x, range.max.x, slowing);
             focus.y = ease_into(focus.y, range.min.y, range.max.y, slowing);
@@ -478,6 +503,38 @@ pub(super) fn zoom_projections(mut rigs: Query<(&RigMotion, &mut Projection), Wi
             && let Projection::Orthographic(orthographic) = projection.as_mut()
         {
             orthographic.scale = zoom;
+        }
+    }
+}
+
+/// A [`TargetWarped`]: every rig framing the warped entity takes note of its share of the
+/// jump (its weight over the weights of the rig's targets), to move with it when it next
+/// tracks its goal. Targets that move in `FixedUpdate` have their samples moved too.
+pub(super) fn note_warps(
+    warped: On<TargetWarped>,
+    mut rigs: Query<(&mut CameraTargets, &mut RigTracking)>,
+) {
+    if !warped.delta.is_finite() {
+        return;
+    }
+    for (mut targets, mut tracking) in &mut rigs {
+        let usable = |weight: f32| weight.is_finite() && weight > 0.0;
+        let total: f32 = targets
+            .targets
+            .iter()
+            .map(|target| target.weight)
+            .filter(|&weight| usable(weight))
+            .sum();
+        let Some(index) = targets
+            .targets
+            .iter()
+            .position(|target| target.entity == warped.entity && usable(target.weight))
+        else {
+            continue;
+        };
+        tracking.warp += warped.delta * (targets.targets[index].weight / total);
+        if let Some(samples) = targets.fixed.get_mut(index) {
+            samples.carry(warped.delta);
         }
     }
 }

@@ -5,48 +5,50 @@ use bevy::camera::{Camera, OrthographicProjection, Projection};
 use bevy::math::{Rect, Vec2};
 use bevy::window::Window;
 
-/// The half width and half height of a camera's view in world units, at zoom `zoom` and, for a
-/// perspective camera, at `depth` in front of it. Zero where nothing is known (no viewport, a
-/// custom projection, a degenerate window): then zones and bounds act on the framed point
-/// alone.
+/// The part of the world a camera's view covers, relative to the camera's position, in its own
+/// right/up axes, at zoom `zoom` and, for a perspective camera, at `depth` in front of it. An
+/// orthographic view is Bevy's own area, so an off-centre `viewport_origin` is honoured (the
+/// camera's position is then not the view's centre). Empty at the origin where nothing is
+/// known (no viewport, a custom projection, a degenerate window): then zones and bounds act on
+/// the framed point alone.
 #[must_use]
-pub(crate) fn half_extents(
+pub(crate) fn view_area(
     projection: Option<&Projection>,
     viewport: Option<Vec2>,
     zoom: f32,
     depth: f32,
-) -> Vec2 {
+) -> Rect {
     let Some(size) = viewport.filter(|size| size.x > 0.0 && size.y > 0.0 && size.is_finite())
     else {
-        return Vec2::ZERO;
+        return Rect::default();
     };
-    let half = match projection {
-        Some(Projection::Orthographic(orthographic)) => {
-            orthographic_half_extents(orthographic, size, zoom)
-        }
+    let area = match projection {
+        Some(Projection::Orthographic(orthographic)) => orthographic_area(orthographic, size, zoom),
         Some(Projection::Perspective(perspective)) => {
             // The frustum's footprint at `depth`: the view scales with distance, and a zoom is
             // a distance factor.
             let half_height = depth.max(0.0) * (perspective.fov * 0.5).tan();
-            Vec2::new(half_height * size.x / size.y, half_height)
+            let half = Vec2::new(half_height * size.x / size.y, half_height);
+            Rect::from_center_half_size(Vec2::ZERO, half)
         }
-        _ => Vec2::ZERO,
+        _ => Rect::default(),
     };
-    if half.is_finite() {
-        half.max(Vec2::ZERO)
+    if area.min.is_finite() && area.max.is_finite() && area.min.cmple(area.max).all() {
+        area
     } else {
-        Vec2::ZERO
+        Rect::default()
     }
 }
 
-/// The half extents of an orthographic view of `size` logical pixels with its scale set to
-/// `zoom`: Bevy's own area computation, on a copy, so every scaling mode is honoured.
-fn orthographic_half_extents(projection: &OrthographicProjection, size: Vec2, zoom: f32) -> Vec2 {
+/// The area of an orthographic view of `size` logical pixels with its scale set to `zoom`:
+/// Bevy's own area computation, on a copy, so every scaling mode and viewport origin is
+/// honoured.
+fn orthographic_area(projection: &OrthographicProjection, size: Vec2, zoom: f32) -> Rect {
     use bevy::camera::CameraProjection;
     let mut view = projection.clone();
     view.scale = zoom;
     view.update(size.x, size.y);
-    view.area.half_size()
+    view.area
 }
 
 /// The logical size of what `camera` renders to, or the primary window's.
@@ -57,18 +59,18 @@ pub(crate) fn viewport_size(camera: Option<&Camera>, window: Option<&Window>) ->
         .or_else(|| window.map(Window::size))
 }
 
-/// Where the centre of a view with half extents `half` may be for the view to stay inside
-/// `bounds`: the bounds shrunk by the half extents. A view wider or taller than the bounds
-/// has one place on that axis, the bounds' centre.
+/// Where a camera whose view covers `area` (relative to the camera, see [`view_area`]) may be
+/// for the view to stay inside `bounds`: the bounds shrunk by the view on each side. A view
+/// wider or taller than the bounds has one place on that axis, the one that centres it.
 #[must_use]
-pub(crate) fn centre_range(bounds: Rect, half: Vec2) -> Rect {
-    let mut min = bounds.min + half;
-    let mut max = bounds.max - half;
-    let centre = bounds.center();
+pub(crate) fn centre_range(bounds: Rect, area: Rect) -> Rect {
+    let mut min = bounds.min - area.min;
+    let mut max = bounds.max - area.max;
+    let centred = bounds.center() - area.center();
     for axis in 0..2 {
         if min[axis] > max[axis] {
-            min[axis] = centre[axis];
-            max[axis] = centre[axis];
+            min[axis] = centred[axis];
+            max[axis] = centred[axis];
         }
     }
     Rect { min, max }
@@ -165,20 +167,38 @@ mod tests {
 
     #[test]
     fn a_view_larger_than_its_bounds_is_centred() {
-        let range = centre_range(Rect::new(0.0, 0.0, 100.0, 50.0), Vec2::new(60.0, 10.0));
+        let view = Rect::from_center_half_size(Vec2::ZERO, Vec2::new(60.0, 10.0));
+        let range = centre_range(Rect::new(0.0, 0.0, 100.0, 50.0), view);
         assert_eq!(range.min, Vec2::new(50.0, 10.0));
         assert_eq!(range.max, Vec2::new(50.0, 40.0));
+        // A view whose camera is at its lower left corner: the camera ranges over the bounds
+        // less the view's size, from the bounds' lower left corner.
+        let view = Rect::new(0.0, 0.0, 40.0, 20.0);
+        let range = centre_range(Rect::new(0.0, 0.0, 100.0, 50.0), view);
+        assert_eq!(range.min, Vec2::new(0.0, 0.0));
+        assert_eq!(range.max, Vec2::new(60.0, 30.0));
     }
 
     #[test]
     fn orthographic_extents_follow_the_window_and_the_zoom() {
         let projection = Projection::Orthographic(OrthographicProjection::default_2d());
-        let half = half_extents(Some(&projection), Some(Vec2::new(800.0, 600.0)), 2.0, 0.0);
-        assert_eq!(half, Vec2::new(800.0, 600.0));
-        assert_eq!(half_extents(Some(&projection), None, 1.0, 0.0), Vec2::ZERO);
+        let area = view_area(Some(&projection), Some(Vec2::new(800.0, 600.0)), 2.0, 0.0);
+        assert_eq!(area.half_size(), Vec2::new(800.0, 600.0));
+        assert_eq!(area.center(), Vec2::ZERO);
         assert_eq!(
-            half_extents(Some(&projection), Some(Vec2::new(0.0, 600.0)), 1.0, 0.0),
-            Vec2::ZERO
+            view_area(Some(&projection), None, 1.0, 0.0),
+            Rect::default()
         );
+        assert_eq!(
+            view_area(Some(&projection), Some(Vec2::new(0.0, 600.0)), 1.0, 0.0),
+            Rect::default()
+        );
+        // An origin at the lower left: the view lies up and right of the camera.
+        let projection = Projection::Orthographic(OrthographicProjection {
+            viewport_origin: Vec2::ZERO,
+            ..OrthographicProjection::default_2d()
+        });
+        let area = view_area(Some(&projection), Some(Vec2::new(800.0, 600.0)), 1.0, 0.0);
+        assert_eq!(area, Rect::new(0.0, 0.0, 800.0, 600.0));
     }
 }

@@ -9,6 +9,7 @@ use sprung::{Spring, SpringState};
 use super::collider::PlacedCollider;
 use super::pose::Pose;
 use super::{CachedTransition, ChainCollider, ChainJoint, Reshaped, SpringChain};
+use crate::clock::SpringTime;
 
 /// Passes over a chain's colliders per bone: a capsule's nearest point moves as the end turns.
 const COLLIDER_PASSES: usize = 3;
@@ -104,7 +105,7 @@ enum Bone {
 /// What the chain step reads besides the chains.
 #[derive(SystemParam)]
 pub(super) struct ChainWorld<'w, 's> {
-    time: Res<'w, Time>,
+    time: SpringTime<'w>,
     transforms: Query<'w, 's, &'static mut Transform>,
     parents: Query<'w, 's, &'static ChildOf>,
     children: Query<'w, 's, &'static Children>,
@@ -147,7 +148,8 @@ pub(super) fn step_chains(
     mut world: ChainWorld,
     hierarchy: Option<ResMut<Reshaped>>,
 ) {
-    let dt = world.time.delta_secs();
+    // Chains advance on the default spring clock.
+    let dt = world.time.delta(None);
     if !(dt >= 0.0 && dt.is_finite()) {
         return;
     }
@@ -241,6 +243,13 @@ fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
             }
         }
         next += 1;
+    }
+    if found.len() == 1 && chain.end.is_none() {
+        warn_once!(
+            "bevy_sprung: {entity} has a SpringChain but no child joints (children with a \
+             Transform) and no end bone: nothing can turn; put the chain on the first bone of \
+             a hierarchy, or give it an end with SpringChain::with_end"
+        );
     }
     let deepest = found
         .iter()

@@ -10,6 +10,7 @@ use sprung::Spring;
 
 use super::InteractionState;
 use super::velocity::ReleaseVelocity;
+use crate::clock::SpringTime;
 use crate::inertia::Inertia;
 pub use crate::inertia::{DragBounds, Snap, SnapLine};
 use crate::spring::trigger_if_alive;
@@ -287,7 +288,7 @@ pub struct DragReleased {
 /// What the drag observers need besides the dragged entity.
 #[derive(SystemParam)]
 struct DragContext<'w, 's> {
-    time: Res<'w, Time<Real>>,
+    time: SpringTime<'w>,
     cameras: Query<'w, 's, (&'static Camera, &'static GlobalTransform)>,
     globals: Query<'w, 's, &'static GlobalTransform>,
     #[cfg(feature = "ui")]
@@ -296,7 +297,7 @@ struct DragContext<'w, 's> {
 
 impl DragContext<'_, '_> {
     fn now(&self) -> f64 {
-        self.time.elapsed_secs_f64()
+        self.time.pointer_now()
     }
 
     /// The pointer at `location` in `space` (for world space, in the space of `parent`).

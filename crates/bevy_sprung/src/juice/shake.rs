@@ -5,6 +5,7 @@ use bevy::prelude::*;
 use sprung::Spring;
 
 use super::JuiceSystems;
+use crate::clock::SpringTime;
 use crate::spring::add_systems_on_first_use;
 
 /// Three translation and three rotation channels.
@@ -294,9 +295,10 @@ fn take_off(applied: Applied, transform: &mut Transform) {
     }
 }
 
-/// `PostUpdate`: advances every shaking entity's shake and adds it to its `Transform`.
-pub(super) fn add_shakes(time: Res<Time>, mut shakes: Query<(&mut Shake, &mut Transform)>) {
-    let dt = time.delta_secs();
+/// `PostUpdate`: advances every shaking entity's shake (on the default spring clock) and adds
+/// it to its `Transform`.
+pub(super) fn add_shakes(time: SpringTime, mut shakes: Query<(&mut Shake, &mut Transform)>) {
+    let dt = time.delta(None);
     for (mut shake, mut transform) in &mut shakes {
         if shake.trauma == 0.0 && shake.motion.applied.is_none() {
             continue;

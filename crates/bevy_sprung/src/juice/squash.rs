@@ -5,6 +5,7 @@ use bevy::log::warn_once;
 use bevy::prelude::*;
 use sprung::Spring;
 
+use crate::clock::SpringTime;
 use crate::layers::{LayerSystems, SpringLayers};
 use crate::spring::{SpringMotion, SpringSystems, add_systems_on_first_use};
 use crate::transform::{Scale, Translation};
@@ -181,9 +182,9 @@ fn factors(stretch: Vec3, conserve: Conserve) -> Vec3 {
 pub struct Squash;
 
 /// After the springs: steps every deformation toward the stretch its velocity asks for and
-/// writes it as the [`Squash`] layer of the scale.
+/// writes it as the [`Squash`] layer of the scale, on the default spring clock.
 fn squash_and_stretch(
-    time: Res<Time>,
+    time: SpringTime,
     mut bodies: Query<(
         &mut SquashStretch,
         &mut SpringLayers<Scale>,
@@ -192,7 +193,7 @@ fn squash_and_stretch(
         Option<&SpringMotion<Translation>>,
     )>,
 ) {
-    let dt = time.delta_secs();
+    let dt = time.delta(None);
     if !(dt > 0.0 && dt.is_finite()) {
         return;
     }

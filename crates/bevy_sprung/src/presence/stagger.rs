@@ -7,6 +7,7 @@ use bevy::prelude::*;
 
 use super::lifecycle::{Presence, PresencePhase, Turn, TurnTo, Waiting};
 use crate::choreography::report_when_settled;
+use crate::clock::SpringTime;
 
 /// Makes the children of this entity that have a [`Presence`] enter one after another: each
 /// one's entering springs ([`EnterFrom`](super::EnterFrom)) hold still until its turn, `interval`
@@ -148,7 +149,7 @@ pub(super) fn schedule_entrances(
     arrived: Query<(Entity, &ChildOf), Added<Presence>>,
     mut parents: Query<(&mut StaggerChildren, &Children, Option<&Presence>)>,
     positions: Query<&Transform>,
-    time: Res<Time>,
+    time: SpringTime,
     mut commands: Commands,
     mut by_parent: Local<Vec<(Entity, Entity)>>,
 ) {
@@ -164,9 +165,11 @@ pub(super) fn schedule_entrances(
     }
     by_parent.sort_unstable();
     by_parent.dedup_by_key(|(parent, _)| *parent);
-    let now = time.elapsed_secs_f64();
+    // Waits count on the default spring clock, as the entrances they delay do: a staggered
+    // pause menu on the real clock goes on while the game is paused.
+    let now = time.elapsed(None);
     // Waits are counted down from the start of this frame, this frame included.
-    let frame_start = now - f64::from(time.delta_secs());
+    let frame_start = now - f64::from(time.delta(None));
     for &(parent, _) in &*by_parent {
         let Ok((mut stagger, children, presence)) = parents.get_mut(parent) else {
             continue;
@@ -246,10 +249,10 @@ pub(super) fn release_entrances(
     mut delayed: Query<(Entity, &mut EntranceDelay)>,
     awaiting: Query<(Entity, &Children), With<AwaitChildren>>,
     presences: Query<(&Presence, Has<Waiting>)>,
-    time: Res<Time>,
+    time: SpringTime,
     mut commands: Commands,
 ) {
-    let dt = f64::from(time.delta_secs());
+    let dt = f64::from(time.delta(None));
     // Gone, or without a presence, counts as entered.
     let entered = |entity: Entity| match presences.get(entity) {
         Ok((presence, waiting)) => presence.phase() != PresencePhase::Entering && !waiting,

@@ -2,6 +2,7 @@
 //! without the component it moves, a spring whose property was never added, a feature's
 //! component without the spring it drives.
 
+use bevy::ecs::query::QueryFilter;
 use bevy::prelude::*;
 use bevy::utils::prelude::ShortName;
 
@@ -22,6 +23,27 @@ pub(crate) fn warn_missing<C: Component, R: Component>(
                 "bevy_sprung: {entity} has a {} but no {}: {fix}",
                 ShortName::of::<C>(),
                 ShortName::of::<R>()
+            );
+        }
+    }
+}
+
+/// A system that warns once about the entities that got a `C` (since it last ran) and match
+/// `F` (what they lack, as filters: `(Without<A>, Without<B>)` for "neither A nor B"), naming
+/// the first such entity, `C`, `missing` and `fix`. Run as [`warn_missing`] is.
+pub(crate) fn warn_lacking<C: Component, F: QueryFilter + 'static>(
+    missing: &'static str,
+    fix: &'static str,
+) -> impl FnMut(Query<Entity, (Added<C>, F)>, Local<bool>) {
+    move |lacking, mut warned| {
+        if *warned {
+            return;
+        }
+        if let Some(entity) = lacking.iter().next() {
+            *warned = true;
+            warn!(
+                "bevy_sprung: {entity} has a {} but no {missing}: {fix}",
+                ShortName::of::<C>(),
             );
         }
     }

@@ -169,9 +169,12 @@ impl Plugin for UiSpringPlugin {
         });
         add_systems_on_first_use(app, &scrolls, PostUpdate, |schedule| {
             schedule.add_systems(
-                scroll::draw_rubber_bands
-                    .in_set(UiSystems::PostLayout)
-                    .before(update_clipping_system)
+                (
+                    scroll::warn_unscrollable.before(UiSystems::Prepare),
+                    scroll::draw_rubber_bands
+                        .in_set(UiSystems::PostLayout)
+                        .before(update_clipping_system),
+                )
                     .run_if(any_with_component::<MomentumScroll>),
             );
         });

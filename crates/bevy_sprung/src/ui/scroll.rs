@@ -243,6 +243,29 @@ pub struct ScrollSettled {
     pub entity: Entity,
 }
 
+/// Warns once about a [`MomentumScroll`] on a node that cannot scroll (no `Overflow::scroll*`
+/// on either axis, or no `Node`): `bevy_ui` keeps its `ScrollPosition` at zero, so a fling
+/// would do nothing.
+pub(super) fn warn_unscrollable(
+    areas: Query<(Entity, Option<&Node>), Added<MomentumScroll>>,
+    mut warned: Local<bool>,
+) {
+    if *warned {
+        return;
+    }
+    let scrolls = |node: &Node| {
+        node.overflow.x == OverflowAxis::Scroll || node.overflow.y == OverflowAxis::Scroll
+    };
+    if let Some((entity, _)) = areas.iter().find(|(_, node)| !node.is_some_and(scrolls)) {
+        *warned = true;
+        warn!(
+            "bevy_sprung: {entity} has a MomentumScroll but its Node does not scroll \
+             (Overflow is not scroll on either axis): bevy_ui keeps it at the top and a fling \
+             does nothing; set `overflow: Overflow::scroll_y()` (or scroll_x, scroll) on it"
+        );
+    }
+}
+
 /// Before the scroll springs step: input, and ends. A wheel step glides to a place inside, a
 /// drag moves the position (the spring holding still there), a fling coasts with no stiffness
 /// or springs to a snap point; a coast that crosses an end, or a place left outside the extent,
@@ -377,6 +400,7 @@ pub(super) mod pointer {
     use bevy::prelude::*;
 
     use super::MomentumScroll;
+    use crate::clock::SpringTime;
     use crate::interaction::ReleaseVelocity;
 
     /// The path of the pointer dragging an area, for its release velocity.
@@ -415,14 +439,14 @@ pub(super) mod pointer {
     pub(in crate::ui) fn drag(
         mut event: On<Pointer<Drag>>,
         mut areas: Query<(&mut MomentumScroll, &mut DragPath)>,
-        time: Res<Time<Real>>,
+        time: SpringTime,
     ) {
         let Ok((mut scroll, mut path)) = areas.get_mut(event.entity) else {
             return;
         };
         scroll.drag_by(-event.delta);
         path.0
-            .record(time.elapsed_secs_f64(), (-event.distance).extend(0.0));
+            .record(time.pointer_now(), (-event.distance).extend(0.0));
         event.propagate(false);
     }
 
@@ -430,12 +454,12 @@ pub(super) mod pointer {
     pub(in crate::ui) fn release(
         mut event: On<Pointer<DragEnd>>,
         mut areas: Query<(&mut MomentumScroll, &DragPath)>,
-        time: Res<Time<Real>>,
+        time: SpringTime,
     ) {
         let Ok((mut scroll, path)) = areas.get_mut(event.entity) else {
             return;
         };
-        scroll.fling(path.0.velocity(time.elapsed_secs_f64()).truncate());
+        scroll.fling(path.0.velocity(time.pointer_now()).truncate());
         event.propagate(false);
     }
 }
