@@ -253,7 +253,8 @@ fn a_node_whose_layout_does_not_change_is_never_written() {
 }
 
 /// A size change is drawn as a scale of the node's box that springs to 1; the children keep
-/// their size (their transform is not scaled) and their place in the drawn box, in proportion.
+/// their size (their transform is not scaled) and their place from the drawn box's top-left
+/// corner, where layout places them from.
 #[test]
 fn a_size_change_springs_without_distorting_children() {
     let mut app = ui_app(60);
@@ -280,9 +281,16 @@ fn a_size_change_springs_without_distorting_children() {
         ))
         .id();
     run(&mut app, 3);
+    let child_before = app
+        .world()
+        .get::<UiGlobalTransform>(child)
+        .unwrap()
+        .translation;
     app.world_mut().get_mut::<Node>(panel).unwrap().width = px(300.0);
     app.update();
     let global = |app: &App, entity| *app.world().get::<UiGlobalTransform>(entity).unwrap();
+    // The child's place in the panel did not change: it is drawn where it was.
+    assert!(global(&app, child).translation.distance(child_before) < 1e-3);
     // Drawn at its old size and place: 100 px wide, centred at x = 50.
     let drawn_panel = global(&app, panel);
     assert!((drawn_panel.matrix2.x_axis.x * 300.0 - 100.0).abs() < 1e-3);
@@ -294,11 +302,11 @@ fn a_size_change_springs_without_distorting_children() {
         let width = panel_now.matrix2.x_axis.x * 300.0;
         assert!(width >= last_width - 1e-3 && width <= 300.0 + 1e-3);
         last_width = width;
-        // The child: never scaled, laid out 140 px left of the centre, which the drawn box
-        // scales.
+        // The child: never scaled, laid out 10 px from the drawn box's left edge, where its
+        // place in the panel is laid out from (so it stays put while the panel grows right).
         let child_now = global(&app, child);
         assert_eq!(child_now.matrix2, Mat2::IDENTITY);
-        let expected = panel_now.translation.x - 140.0 * width / 300.0;
+        let expected = panel_now.translation.x - width / 2.0 + 10.0;
         assert!(
             (child_now.translation.x - expected).abs() < 1e-2,
             "child at {} instead of {expected}",
@@ -307,6 +315,112 @@ fn a_size_change_springs_without_distorting_children() {
     }
     assert_eq!(global(&app, panel).matrix2, Mat2::IDENTITY);
     assert!(asleep::<LayoutScale>(&app, panel));
+}
+
+/// Layout springs nested: a column with a layout spring (moves only, or moves and size) holds
+/// three rows with their own; the middle row goes. No row jumps in that frame (the first row's
+/// place did not change, the last one's is sprung from where it was), every frame after moves
+/// each row by no more than its spring can, and they end on their new places — with the column
+/// at the top left or centred in the window, and turned and scaled by its `UiTransform`.
+#[test]
+fn nested_layout_springs_keep_rows_in_place_when_a_sibling_goes() {
+    let springs = [
+        LayoutSpring::position_only(Spring::snappy()),
+        LayoutSpring::new(Spring::snappy()),
+    ];
+    for column_spring in springs {
+        for centred in [false, true] {
+            for transform in [
+                UiTransform::default(),
+                UiTransform {
+                    scale: Vec2::splat(1.5),
+                    rotation: Rot2::degrees(10.0),
+                    ..default()
+                },
+            ] {
+                let mut app = ui_app(60);
+                let window = app
+                    .world_mut()
+                    .spawn(Node {
+                        width: percent(100.0),
+                        height: percent(100.0),
+                        justify_content: if centred {
+                            JustifyContent::Center
+                        } else {
+                            JustifyContent::Start
+                        },
+                        align_items: if centred {
+                            AlignItems::Center
+                        } else {
+                            AlignItems::Start
+                        },
+                        ..default()
+                    })
+                    .id();
+                let column = app
+                    .world_mut()
+                    .spawn((
+                        Node {
+                            flex_direction: FlexDirection::Column,
+                            width: px(200.0),
+                            ..default()
+                        },
+                        column_spring,
+                        transform,
+                        ChildOf(window),
+                    ))
+                    .id();
+                let rows: Vec<Entity> = (0..3)
+                    .map(|_| {
+                        app.world_mut()
+                            .spawn((
+                                Node {
+                                    height: px(40.0),
+                                    flex_shrink: 0.0,
+                                    ..default()
+                                },
+                                LayoutSpring::new(Spring::snappy()),
+                                ChildOf(column),
+                            ))
+                            .id()
+                    })
+                    .collect();
+                run(&mut app, 5);
+                let case = format!("{column_spring:?}, centred {centred}, {transform:?}");
+                let before = [drawn(&app, rows[0]), drawn(&app, rows[2])];
+                app.world_mut().entity_mut(rows[1]).despawn();
+                app.update();
+                for (row, was) in [rows[0], rows[2]].into_iter().zip(before) {
+                    let now = drawn(&app, row);
+                    assert!(
+                        now.distance(was) < 1e-2,
+                        "{case}: {row} jumped {was} → {now}"
+                    );
+                }
+                let mut last = [drawn(&app, rows[0]), drawn(&app, rows[2])];
+                for frame in 0..120 {
+                    app.update();
+                    let now = [drawn(&app, rows[0]), drawn(&app, rows[2])];
+                    for (a, b) in last.iter().zip(now) {
+                        // A snappy spring carries a 40 px (60 px turned and scaled) offset at
+                        // most ~6 px in a frame.
+                        assert!(a.distance(b) < 8.0, "{case}, frame {frame}: {a} → {b}");
+                    }
+                    last = now;
+                }
+                let column_offset = *app.world().get::<LayoutOffset>(column).unwrap();
+                assert_eq!(column_offset, LayoutOffset::ZERO, "{case}");
+                // Laid out one row apart: 40 px along the column's turned and scaled axis.
+                let apart = last[1].distance(last[0]);
+                let expected = if transform == UiTransform::default() {
+                    40.0
+                } else {
+                    60.0
+                };
+                assert!((apart - expected).abs() < 0.1, "{case}: {apart}");
+            }
+        }
+    }
 }
 
 /// Scrolling is not a layout change: the items move with the scroll at once, their springs

@@ -28,8 +28,12 @@ use crate::spring::PropertySpring;
 /// a `LayoutSpring` on the parent too to spring the parent's moves. The offset is drawn, not
 /// laid out: the node's `Node`, its `UiTransform` (springs on it add on top) and what picking
 /// and focus see next frame are where layout put it, and its descendants move with it. A size
-/// change is drawn as a scale of the node's own box (background, border, its own text), while
-/// its children keep their size and move with the scaled box.
+/// change is drawn as a scale of the node's own box (background, border, its own text) about
+/// its centre, while its children keep their size and their place from the drawn box's top-left
+/// corner, where layout places them from. With [`position_only`](Self::position_only) the
+/// top-left corner is what stays where it was (the new size is shown at once). Either way a
+/// child whose place in its parent did not change does not move, however layout springs nest:
+/// a column with a `LayoutSpring` whose row goes keeps its other rows where they were drawn.
 ///
 /// A node hidden with `Display::None` (laid out with no size) is not sprung: shown again, it
 /// appears at its place at once (give it a [`Presence`](crate::presence::Presence) to make it
@@ -161,11 +165,15 @@ pub type LayoutScaleSpring = PropertySpring<LayoutScale>;
 #[reflect(Component, Default)]
 pub(crate) struct LaidOut(Option<LayoutBox>);
 
-/// A node's box as layout computes it, in physical pixels: its centre relative to its parent's
-/// top-left corner (scrolling and its own `UiTransform` taken out), and its size.
+/// A node's box as layout computes it, in physical pixels: its centre and its top-left corner
+/// relative to its parent's top-left corner (scrolling and its own `UiTransform` translation
+/// taken out), and its size.
 #[derive(Reflect, Debug, Clone, Copy, PartialEq)]
 struct LayoutBox {
     centre: Vec2,
+    /// The corner its children are laid out from, in the parent's frame (the node's own
+    /// rotation and scale applied).
+    corner: Vec2,
     size: Vec2,
     parent: Option<Entity>,
 }
@@ -180,9 +188,14 @@ impl LayoutBox {
     }
 
     /// The offset that draws a node laid out at `self` where it was drawn at `before` with
-    /// `offset`: the same centre and, with `size`, the same size.
+    /// `offset`: with `size`, the same centre and size; without, the same top-left corner (the
+    /// new size shown at once), so that what is laid out inside it stays where it was.
     fn offset_from(&self, before: &Self, offset: LayoutOffset, size: bool) -> LayoutOffset {
-        let moved = before.centre - self.centre;
+        let moved = if size {
+            before.centre - self.centre
+        } else {
+            before.corner - self.corner
+        };
         let translation = if moved.abs().max_element() > SMALLEST_MOVE {
             offset.translation + moved
         } else {
@@ -224,7 +237,7 @@ impl LaidOutNode<'_> {
             self.node.size,
             self.target.physical_size().as_vec2(),
         );
-        let (centre, parent) = match parent {
+        let (centre, axes, parent) = match parent {
             Some((entity, parent, parent_global)) => {
                 // Layout placed the centre at `location − scroll + (size − parent size) / 2` in
                 // the parent's frame, plus the node's own translation.
@@ -235,13 +248,15 @@ impl LaidOutNode<'_> {
                 let scroll = parent.scroll_position * kept;
                 (
                     local.translation - own + scroll + 0.5 * parent.size,
+                    local.matrix2,
                     Some(entity),
                 )
             }
-            None => (self.global.translation - own, None),
+            None => (self.global.translation - own, self.global.matrix2, None),
         };
         LayoutBox {
             centre,
+            corner: centre - axes * (0.5 * self.node.size),
             size: self.node.size,
             parent,
         }
@@ -332,25 +347,27 @@ pub(super) enum Drawn {
 
 /// After [`note_reflows`]: draws every offset. Each node with an offset, and its descendants,
 /// move by the offset (in its parent's frame); a node drawn at another size has its own box
-/// scaled, and its children keep their size and move as the scaled box places them.
+/// scaled about its centre, and its children keep their size and their place from the drawn
+/// box's top-left corner (where layout places them from): a child whose place in its parent did
+/// not change does not move, at any nesting of layout springs.
 pub(super) fn draw_offsets(
     mut queries: ParamSet<(
         Query<
-            (Entity, &LayoutOffset, Option<&ChildOf>),
+            (Entity, &LayoutOffset, &ComputedNode, Option<&ChildOf>),
             Or<(Changed<LayoutOffset>, Changed<UiGlobalTransform>)>,
         >,
         Query<&mut UiGlobalTransform>,
     )>,
     descendants: Query<&Children>,
-    mut offsets: Local<Vec<(Entity, LayoutOffset, Option<Entity>)>>,
+    mut offsets: Local<Vec<(Entity, LayoutOffset, Vec2, Option<Entity>)>>,
     mut drawn: Local<Vec<(Entity, Drawn)>>,
     mut stack: Local<Vec<Entity>>,
 ) {
     offsets.clear();
     drawn.clear();
-    for (entity, offset, child_of) in &queries.p0() {
+    for (entity, offset, node, child_of) in &queries.p0() {
         if *offset != LayoutOffset::ZERO {
-            offsets.push((entity, *offset, child_of.map(ChildOf::parent)));
+            offsets.push((entity, *offset, node.size, child_of.map(ChildOf::parent)));
         }
     }
     if offsets.is_empty() {
@@ -358,7 +375,7 @@ pub(super) fn draw_offsets(
     }
     // Read from the transforms layout computed, before any is drawn.
     let globals = queries.p1();
-    for &(entity, offset, parent) in &*offsets {
+    for &(entity, offset, size, parent) in &*offsets {
         let Ok(global) = globals.get(entity) else {
             continue;
         };
@@ -371,16 +388,14 @@ pub(super) fn draw_offsets(
             continue;
         }
         drawn.push((entity, Drawn::Scale(scale)));
+        // The box scaled about its centre moves its top-left corner by this: the children go
+        // with the corner.
+        let corner_moved = global.matrix2 * ((Vec2::ONE - scale) * (0.5 * size));
         let children = descendants
             .get(entity)
             .map_or(&[][..], |children| &**children);
         for &child in children {
-            let Ok(child_global) = globals.get(child) else {
-                continue;
-            };
-            let from_centre = (global.inverse() * **child_global).translation;
-            let moved = global.matrix2 * ((scale - Vec2::ONE) * from_centre);
-            drawn.push((child, Drawn::Shift(moved)));
+            drawn.push((child, Drawn::Shift(corner_moved)));
         }
     }
     let mut globals = queries.p1();
