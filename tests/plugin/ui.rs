@@ -180,3 +180,167 @@ fn colours_blend_in_oklab() {
         );
     }
 }
+
+/// A UI length of `number` in one of the units a size is given in.
+fn size_length(random: &mut crate::harness::Random, number: f32) -> Val {
+    match random.below(6) {
+        0 => Val::Percent(number / 4.0),
+        1 => Val::Vw(number / 8.0),
+        2 => Val::Auto,
+        _ => Val::Px(number),
+    }
+}
+
+fn size(random: &mut crate::harness::Random) -> Val2 {
+    let mut number = || 300.0 * random.unit();
+    let (width, height) = (number(), number());
+    Val2::new(size_length(random, width), size_length(random, height))
+}
+
+/// The number of a length (0 for `Auto`).
+fn length_number(value: Val) -> f32 {
+    match value {
+        Val::Px(n) | Val::Percent(n) | Val::Vw(n) | Val::Vh(n) | Val::VMin(n) | Val::VMax(n) => n,
+        Val::Auto => 0.0,
+    }
+}
+
+/// `NodeSize` never passes through zero, on any path: springs inserted (with a velocity),
+/// replaced and removed, targets in mixed units, sequences started and stopped over them,
+/// kicks and velocities of any size, moving targets, values written by hand, pauses and
+/// hitches. Every target is at least zero; no width or height drawn is ever below it.
+#[test]
+fn a_node_size_never_passes_through_zero_on_any_path() {
+    use crate::harness::{Random, frame};
+    use bevy::time::TimeUpdateStrategy;
+    use std::time::Duration;
+    for seed in 0..8_u64 {
+        let mut random = Random(seed);
+        let mut app = app(60);
+        let nodes: Vec<Entity> = (0..24)
+            .map(|_| app.world_mut().spawn(Node::default()).id())
+            .collect();
+        for frame_index in 0..1500 {
+            for _ in 0..4 {
+                let node = random.pick(&nodes);
+                let spring = random.pick(&[
+                    Spring::bouncy(),
+                    Spring::wobbly(),
+                    Spring::snappy(),
+                    Spring::from_natural_frequency(30.0, 0.05).unwrap(),
+                ]);
+                let target = size(&mut random);
+                let kick = Vec2::new(random.symmetric(5e3), random.symmetric(5e3));
+                let operation = random.below(14);
+                let mut entity = app.world_mut().entity_mut(node);
+                let has_spring = entity.contains::<NodeSizeSpring>();
+                match operation {
+                    0 => {
+                        entity.insert(NodeSizeSpring::new(spring, target).with_velocity(kick));
+                    }
+                    1 => {
+                        entity.remove::<NodeSizeSpring>();
+                    }
+                    2 | 3 if has_spring => {
+                        entity
+                            .get_mut::<NodeSizeSpring>()
+                            .unwrap()
+                            .set_target(target);
+                    }
+                    4 if has_spring => {
+                        entity
+                            .get_mut::<NodeSizeSpring>()
+                            .unwrap()
+                            .add_impulse(kick);
+                    }
+                    5 if has_spring => {
+                        entity
+                            .get_mut::<NodeSizeSpring>()
+                            .unwrap()
+                            .set_velocity(kick);
+                    }
+                    6 if has_spring => {
+                        let rate = kick * 0.05;
+                        entity
+                            .get_mut::<NodeSizeSpring>()
+                            .unwrap()
+                            .set_target_velocity(rate);
+                    }
+                    7 => {
+                        if entity.contains::<SpringSequence<NodeSize>>() {
+                            entity.remove::<SpringSequence<NodeSize>>();
+                        } else {
+                            let steps = [size(&mut random), size(&mut random), size(&mut random)];
+                            entity.insert(
+                                SpringSequence::<NodeSize>::new()
+                                    .then(steps[0])
+                                    .then_after(random.unit() * 0.3, steps[1])
+                                    .then_within(2.0, steps[2])
+                                    .with_spring(spring),
+                            );
+                        }
+                    }
+                    8 => {
+                        let written = size(&mut random);
+                        if let Some(mut node) = entity.get_mut::<Node>() {
+                            (node.width, node.height) = (written.x, written.y);
+                        }
+                    }
+                    11 => {
+                        let skipping = entity
+                            .get::<bevy_sprung::spring::SkipFrames>()
+                            .is_some_and(|skip| skip.0);
+                        entity.insert(bevy_sprung::spring::SkipFrames(!skipping));
+                    }
+                    12 => {
+                        if entity.contains::<Node>() {
+                            entity.remove::<Node>();
+                        } else {
+                            entity.insert(Node::default());
+                        }
+                    }
+                    13 => {
+                        let steps = [size(&mut random), size(&mut random)];
+                        entity.insert(
+                            SpringSequence::<NodeSize>::new()
+                                .then(steps[0])
+                                .then(steps[1])
+                                .ping_pong(),
+                        );
+                    }
+                    9 => {
+                        let paused = random.chance(0.5);
+                        let mut time = app.world_mut().resource_mut::<Time<Virtual>>();
+                        if paused {
+                            time.pause();
+                        } else {
+                            time.unpause();
+                        }
+                    }
+                    _ => {
+                        let hitch = random.chance(0.3);
+                        let step = if hitch {
+                            Duration::from_secs_f32(random.unit() * 0.25)
+                        } else {
+                            frame(random.pick(&[30, 60, 144, 240]))
+                        };
+                        app.insert_resource(TimeUpdateStrategy::ManualDuration(step));
+                    }
+                }
+            }
+            app.update();
+            for &node in &nodes {
+                let Some(drawn) = app.world().get::<Node>(node) else {
+                    continue;
+                };
+                for (axis, length) in [("width", drawn.width), ("height", drawn.height)] {
+                    let number = length_number(length);
+                    assert!(
+                        number >= 0.0 && number.is_finite(),
+                        "seed {seed}, frame {frame_index}: {node} {axis} = {length:?}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -216,6 +216,9 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
         S::is_written(current, target, offset)
     }
 
+    /// A retarget moves no value, but the offset from the new target is rounded: where that
+    /// would put the value a rounding across zero (a size at exactly 0 given a larger target),
+    /// it is put exactly on zero (the velocity is kept).
     #[inline]
     fn retarget(
         old_target: Self::Value,
@@ -223,7 +226,13 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
         offset: Carried<Self::Offset>,
         velocity: Self::Offset,
     ) -> (Carried<Self::Offset>, Self::Offset) {
-        S::retarget(old_target, new_target, offset, velocity)
+        let (after, velocity) = S::retarget(old_target, new_target, offset, velocity);
+        let coordinates = S::coordinates(new_target);
+        // The value before the retarget, measured from the new target (only its sign counts).
+        let was = ((S::coordinates(old_target) + offset.offset) + offset.remainder) - coordinates;
+        let [offset, remainder, _] =
+            SpringVector::stop_at_zero(coordinates, was, [after.offset, after.remainder, velocity]);
+        (Carried { remainder, offset }, velocity)
     }
 
     #[inline]

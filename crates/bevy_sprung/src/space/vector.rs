@@ -26,10 +26,11 @@ pub trait SpringVector:
     #[must_use]
     fn max_magnitude(self) -> f32;
 
-    /// Per component `i`, with `c = coordinates`: where `c + before` and `c + after` lie on
-    /// opposite sides of zero, and `c` lies on the side of `c + before` (an overshoot carrying
-    /// the value away from its target across zero), `after` becomes `−c` (the value exactly 0)
-    /// and that component of `remainder` and `velocity` 0. See
+    /// Per component `i`, with `c = coordinates`: where `c + before` and the value
+    /// `(c + after) + remainder` lie on opposite sides of zero (the remainder counts only where
+    /// `c + after` is zero: elsewhere it cannot change the sign), and `c` lies on the side of
+    /// `c + before` (an overshoot carrying the value away from its target across zero), `after`
+    /// becomes `−c` (the value exactly 0) and that component of `remainder` and `velocity` 0. See
     /// [`NeverThroughZero`](super::NeverThroughZero).
     #[must_use]
     fn stop_at_zero(coordinates: Self, before: Self, after: [Self; 3]) -> [Self; 3];
@@ -153,7 +154,17 @@ fn stop_at_zero<const N: usize>(
 ) -> [[f32; N]; 3] {
     for i in 0..N {
         let target = coordinates[i];
-        let (was, is) = (target + before[i], target + after[i]);
+        // Where the value is, `(target + after) + remainder`: the remainder (below half a
+        // unit in the last place of `after`) decides its sign only where `target + after` is
+        // exactly zero, where an offset landing on zero with a negative remainder would
+        // otherwise write a value a rounding below it.
+        let rounded = target + after[i];
+        let is = if rounded == 0.0 {
+            remainder[i]
+        } else {
+            rounded
+        };
+        let was = target + before[i];
         if (was >= 0.0 && is < 0.0 && target >= 0.0) || (was <= 0.0 && is > 0.0 && target <= 0.0) {
             after[i] = -target;
             remainder[i] = 0.0;
