@@ -4,8 +4,9 @@
 //! - The items stagger in when the list opens ([`StaggerChildren`]), each one entering with
 //!   [`Presence`]: it grows and fades in from [`EnterFrom`] values.
 //! - A, D, R: add an item at the top, remove the selected one (it slides out, then is
-//!   despawned: [`despawn_after_exit`](PresenceCommands::despawn_after_exit)), move the last to
-//!   the top. The other items spring to their new places ([`LayoutSpring`]): `Children` is
+//!   despawned: [`despawn_after_exit`](PresenceCommands::despawn_after_exit); with
+//!   [`PopLayout`] the rows below move up as it goes), move the last to the top. The other
+//!   items spring to their new places ([`LayoutSpring`]): `Children` is
 //!   reordered and layout does the rest.
 //! - F filters the list to the equipped items: the others leave, and come back when the filter
 //!   is cleared.
@@ -363,6 +364,8 @@ fn row(item: &Item) -> impl Bundle {
         ImplicitSpring::<BackgroundColor>::new(Spring::smooth()),
         LayoutSpring::new(Spring::snappy()),
         Presence::default(),
+        // A leaving row leaves the layout at once: the rows below close the gap as it slides.
+        PopLayout,
         UiTransformScaleSpring::new(Spring::bouncy(), Vec2::ONE),
         EnterFrom::<UiTransformScale>(Vec2::splat(0.6)),
         UiTransformTranslationSpring::new(Spring::snappy(), Val2::ZERO),

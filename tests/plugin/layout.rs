@@ -423,6 +423,58 @@ fn nested_layout_springs_keep_rows_in_place_when_a_sibling_goes() {
     }
 }
 
+/// `PopLayout` (Motion's `popLayout`): the row that leaves is taken out of the flow the
+/// moment its exit starts, drawn where it stood while it shrinks away, and the row below
+/// springs up into the gap at once (not after the exit settled); cancelled, the leaving row
+/// goes back into the flow as it was and the row below springs back down.
+#[test]
+fn a_row_that_pops_out_of_layout_lets_the_next_row_close_the_gap_at_once() {
+    use bevy_sprung::ui::UiTransformScale;
+    for cancel in [false, true] {
+        let mut app = ui_app(60);
+        let (_, items) = spawn_column(&mut app, 3, Spring::snappy());
+        let leaving = items[1];
+        app.world_mut().entity_mut(leaving).insert((
+            PopLayout,
+            UiTransformScaleSpring::new(Spring::smooth(), Vec2::ONE),
+            ExitTo::<UiTransformScale>(Vec2::ZERO),
+        ));
+        run(&mut app, 30);
+        let node_before = app.world().get::<Node>(leaving).unwrap().clone();
+        assert_eq!(drawn(&app, items[2]), slot(2));
+        app.world_mut()
+            .commands()
+            .entity(leaving)
+            .despawn_after_exit();
+        app.update();
+        // The frame the exit starts: nothing jumps, and the row below is already laid out in
+        // the gap (drawn where it was by its offset, which springs it up).
+        assert!(drawn(&app, leaving).distance(slot(1)) < 1e-3);
+        assert!(drawn(&app, items[2]).distance(slot(2)) < 1e-3);
+        let offset = app
+            .world()
+            .get::<LayoutOffset>(items[2])
+            .unwrap()
+            .translation;
+        assert!((offset.y - 40.0).abs() < 1e-3, "{offset}");
+        // It moves up while the leaving row shrinks where it stood.
+        run(&mut app, 10);
+        assert!(drawn(&app, items[2]).y < slot(2).y - 5.0);
+        assert!(drawn(&app, leaving).distance(slot(1)) < 1e-3);
+        if cancel {
+            app.world_mut().commands().entity(leaving).cancel_exit();
+            run(&mut app, 120);
+            assert_eq!(*app.world().get::<Node>(leaving).unwrap(), node_before);
+            assert!(drawn(&app, leaving).distance(slot(1)) < 1e-3);
+            assert!(drawn(&app, items[2]).distance(slot(2)) < 0.05);
+        } else {
+            run(&mut app, 120);
+            assert!(app.world().get_entity(leaving).is_err(), "never despawned");
+            assert!(drawn(&app, items[2]).distance(slot(1)) < 0.05);
+        }
+    }
+}
+
 /// Scrolling is not a layout change: the items move with the scroll at once, their springs
 /// asleep.
 #[test]

@@ -75,6 +75,7 @@ impl SpringTime<'_> {
     /// When a pointer sample is taken: the real clock's elapsed seconds. A pointer moves in
     /// the user's time, so its velocity is measured in it whatever the springs' clock is (the
     /// fling it starts then moves on the spring's own clock).
+    #[cfg(feature = "picking")]
     pub(crate) fn pointer_now(&self) -> f64 {
         self.elapsed(Some(SpringClock::Real))
     }

@@ -58,6 +58,7 @@ impl FixedSamples {
     }
 
     /// The target was carried by `shift` since its last sample: every sample moves with it.
+    #[cfg(feature = "camera")]
     pub(crate) fn carry(&mut self, shift: Vec3) {
         for sample in [&mut self.previous, &mut self.latest].into_iter().flatten() {
             *sample += shift;

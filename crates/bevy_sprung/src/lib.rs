@@ -210,7 +210,7 @@ pub mod prelude {
         LayoutOffset, LayoutSpring, MomentumScroll, NodeBottom, NodeBottomSpring, NodeHeight,
         NodeHeightSpring, NodeLeft, NodeLeftSpring, NodePosition, NodePositionSpring, NodeRight,
         NodeRightSpring, NodeSize, NodeSizeSpring, NodeTop, NodeTopSpring, NodeWidth,
-        NodeWidthSpring, ScrollSettled, UiTransformRotation, UiTransformRotationSpring,
+        NodeWidthSpring, PopLayout, ScrollSettled, UiTransformRotation, UiTransformRotationSpring,
         UiTransformScale, UiTransformScaleSpring, UiTransformTranslation,
         UiTransformTranslationSpring,
     };

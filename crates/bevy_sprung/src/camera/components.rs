@@ -322,6 +322,13 @@ impl From<Entity> for CameraTarget {
 /// [`time`](Self::time), smoothed by its own spring so that turning round swings the view
 /// over instead of snapping it. For a goal at constant velocity the offset rests at exactly
 /// `velocity · time`.
+///
+/// **What is seen on screen** is less than `v·T`: the camera follows the look-ahead point with
+/// the rig's steady lag `c·v/k`, and a [`DeadZone`] lets the point run half the zone ahead
+/// before the camera moves, so the screen centre leads the target by `v·T − c·v/k − zone/2`
+/// (with `v = 600`, `T = 0.4`, `c/k = 0.25 s` and a zone 160 px wide: 240 − 150 − 80 = 10 px).
+/// For a wanted on-screen lead `L`, set `time = L/v + c/k + zone/(2v)`; a stiffer horizontal
+/// spring (smaller `c/k`) or a narrower zone leaves more of `v·T` on screen.
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
 #[require(RigLookAheadSpring = PropertySpring::new(Spring::smooth(), Vec3::ZERO))]
 #[reflect(Component, Debug, Clone, PartialEq)]
@@ -557,6 +564,9 @@ impl GroupFraming {
 /// it. Yaw, pitch and distance spring in these polar coordinates (one spring,
 /// [`spring`](Self::spring)), so orbiting never changes the distance, and zooming is a spring
 /// on the distance.
+///
+/// Yaw 0 (and pitch 0) puts the camera on the pivot's `+Z` side looking along `−Z` (Bevy's
+/// forward); a positive yaw turns it about `+Y` toward `+X`, a positive pitch raises it.
 ///
 /// Drive it from input by changing its targets — [`rotate`](Self::rotate) by mouse motion or a
 /// stick, [`zoom_by`](Self::zoom_by) by the wheel — or by setting the fields. Pitch and

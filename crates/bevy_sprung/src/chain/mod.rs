@@ -28,6 +28,19 @@ use crate::spring::{add_systems_on_first_use, first_use};
 /// Makes the hierarchy below its entity swing: each joint with one child joint springs toward
 /// the pose it is given, pulled by its parent's motion, gravity and wind.
 ///
+/// Two things to know up front:
+/// - **The last joint turns only with an end bone.** A joint turns to point its bone at the
+///   sprung tip, and a bone runs to the joint's child: a joint without a child joint (the last
+///   one) has no bone and does not turn, unless [`with_end`](Self::with_end) gives it one (the
+///   offset of its tip in its own axes, e.g. the length of the last bone). A chain on an entity
+///   with no child joints and no end is told once.
+/// - **Choosing the spring.** A chain follows at the spring's natural frequency and sways by
+///   its damping ratio: start from [`Spring::smooth`] or [`Spring::gentle`] (ζ ≥ 0.7) for hair
+///   and tails; a bouncy spring (ζ ≈ 0.3) whips: after a hard stop of the parent a joint can
+///   swing past 180° and the chain folds over. There are no angle limits: keep the swing within
+///   bounds with damping (or a stiffer spring toward the root, [`ChainGradient`]), and keep
+///   bodies out with [`ChainCollider`]s.
+///
 /// - **Exact, and the same at any frame rate**: the chain steps on a fixed grid of times
 ///   ([`rate`](Self::rate) steps a second), each tip by the exact step of its spring toward a
 ///   rest place moving linearly over the step (a first-order hold) plus the exact response to

@@ -2,6 +2,7 @@
 //! without the component it moves, a spring whose property was never added, a feature's
 //! component without the spring it drives.
 
+#[cfg(feature = "camera")]
 use bevy::ecs::query::QueryFilter;
 use bevy::prelude::*;
 use bevy::utils::prelude::ShortName;
@@ -28,6 +29,7 @@ pub(crate) fn warn_missing<C: Component, R: Component>(
     }
 }
 
+#[cfg(feature = "camera")]
 /// A system that warns once about the entities that got a `C` (since it last ran) and match
 /// `F` (what they lack, as filters: `(Without<A>, Without<B>)` for "neither A nor B"), naming
 /// the first such entity, `C`, `missing` and `fix`. Run as [`warn_missing`] is.

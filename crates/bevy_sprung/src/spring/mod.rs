@@ -30,5 +30,7 @@ pub use skip::SkipFrames;
 
 pub(crate) use event::{property_event, trigger_if_alive};
 pub(crate) use first_use::{add_property_systems, add_systems_on_first_use, first_use};
-pub(crate) use misconfigured::{warn_lacking, warn_missing};
+#[cfg(feature = "camera")]
+pub(crate) use misconfigured::warn_lacking;
+pub(crate) use misconfigured::warn_missing;
 pub(crate) use plugin::{is_registered, spring_schedule};

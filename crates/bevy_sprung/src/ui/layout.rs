@@ -14,6 +14,7 @@ use bevy::ui::{ComputedUiRenderTargetInfo, IgnoreScroll, UiGlobalTransform};
 use sprung::{RestThreshold, Spring};
 
 use super::drawn::shift_subtrees;
+use crate::presence::Presence;
 use crate::space::Linear;
 use crate::spring::PropertySpring;
 
@@ -411,6 +412,141 @@ pub(super) fn draw_offsets(
             Drawn::Shift(by) => {
                 shift_subtrees(&mut globals, &descendants, &mut stack, [entity], by);
             }
+        }
+    }
+}
+
+/// Motion's `popLayout` for a node with a [`Presence`]: the moment its exit starts it leaves
+/// the layout flow — laid out absolutely, where it was and at the size it had — so that its
+/// siblings close the gap at once (each with a [`LayoutSpring`] springs into it) while it
+/// animates out where it stood. An exit cancelled puts it back into the flow as it was.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::prelude::*;
+/// use bevy_sprung::ui::UiTransformScale;
+///
+/// fn spawn_row(mut commands: Commands) {
+///     commands.spawn((
+///         Node { height: px(40.0), ..default() },
+///         LayoutSpring::new(Spring::snappy()),
+///         Presence::default(),
+///         PopLayout,
+///         UiTransformScaleSpring::new(Spring::snappy(), Vec2::ONE),
+///         ExitTo::<UiTransformScale>(Vec2::ZERO),
+///     ));
+/// }
+///
+/// // The row shrinks away where it stood; the rows below move up at once.
+/// fn remove(rows: Query<Entity, With<PopLayout>>, mut commands: Commands) {
+///     for row in &rows {
+///         commands.entity(row).despawn_after_exit();
+///     }
+/// }
+/// # let mut app = App::new();
+/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// #     .add_systems(Startup, spawn_row)
+/// #     .add_systems(Update, remove);
+/// # app.update();
+/// ```
+#[derive(Component, Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
+#[component(on_add = crate::spring::first_use::<PopLayout>)]
+#[require(Presence)]
+#[reflect(Component, Debug, Default, Clone, PartialEq)]
+pub struct PopLayout;
+
+/// What a popped node's `Node` said before it left the flow, restored if its exit is cancelled.
+#[derive(Component, Debug, Clone, PartialEq)]
+pub(super) struct Popped {
+    position_type: PositionType,
+    inset: [Val; 4],
+    size: [Val; 2],
+    margin: UiRect,
+}
+
+impl Popped {
+    /// Takes `node` out of the flow, to the place and size of `laid_out` (physical pixels, its
+    /// box in its parent's frame), the parent's `border` inside which absolute nodes are placed,
+    /// and returns what it said before.
+    fn pop(node: &mut Node, laid_out: &LayoutBox, border: Vec2, inverse_scale: f32) -> Self {
+        let popped = Self {
+            position_type: node.position_type,
+            inset: [node.left, node.top, node.right, node.bottom],
+            size: [node.width, node.height],
+            margin: node.margin,
+        };
+        let corner = (laid_out.centre - 0.5 * laid_out.size - border) * inverse_scale;
+        let size = laid_out.size * inverse_scale;
+        node.position_type = PositionType::Absolute;
+        (node.left, node.top, node.right, node.bottom) =
+            (Val::Px(corner.x), Val::Px(corner.y), Val::Auto, Val::Auto);
+        (node.width, node.height) = (Val::Px(size.x), Val::Px(size.y));
+        node.margin = UiRect::ZERO;
+        popped
+    }
+
+    /// Puts `node` back into the flow as it was.
+    fn restore(&self, node: &mut Node) {
+        node.position_type = self.position_type;
+        [node.left, node.top, node.right, node.bottom] = self.inset;
+        [node.width, node.height] = self.size;
+        node.margin = self.margin;
+    }
+}
+
+/// Before layout: a [`PopLayout`] node whose exit started leaves the flow, where and as large
+/// as layout last put it; one whose exit was cancelled comes back.
+pub(super) fn pop_exiting(
+    mut nodes: Query<
+        (
+            Entity,
+            &Presence,
+            &mut Node,
+            Option<&Popped>,
+            (
+                &ComputedNode,
+                &UiGlobalTransform,
+                &UiTransform,
+                &ComputedUiRenderTargetInfo,
+                Option<&IgnoreScroll>,
+                Option<&ChildOf>,
+            ),
+        ),
+        (With<PopLayout>, Changed<Presence>),
+    >,
+    parents: Query<(&ComputedNode, &UiGlobalTransform)>,
+    mut commands: Commands,
+) {
+    for (entity, presence, mut node, popped, laid) in &mut nodes {
+        match (presence.is_exiting(), popped) {
+            (true, None) => {
+                let (computed, global, transform, target, ignore_scroll, child_of) = laid;
+                let parent = child_of.and_then(|child_of| {
+                    let parent = child_of.parent();
+                    parents
+                        .get(parent)
+                        .ok()
+                        .map(|(node, global)| (parent, node, global))
+                });
+                let border = parent.map_or(Vec2::ZERO, |(_, parent, _)| parent.border.min_inset);
+                let laid_out = LaidOutNode {
+                    node: computed,
+                    global,
+                    transform,
+                    target,
+                    ignore_scroll,
+                }
+                .layout_box(parent);
+                let popped =
+                    Popped::pop(&mut node, &laid_out, border, computed.inverse_scale_factor);
+                commands.entity(entity).try_insert(popped);
+            }
+            (false, Some(popped)) => {
+                popped.restore(&mut node);
+                commands.entity(entity).try_remove::<Popped>();
+            }
+            _ => {}
         }
     }
 }

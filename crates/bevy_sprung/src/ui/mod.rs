@@ -11,7 +11,7 @@ mod scroll;
 
 pub use layout::{
     LayoutOffset, LayoutScale, LayoutScaleSpring, LayoutSpring, LayoutTranslation,
-    LayoutTranslationSpring,
+    LayoutTranslationSpring, PopLayout,
 };
 pub use scroll::{MomentumScroll, ScrollMotion, ScrollOffset, ScrollSettled, ScrollSpring};
 
@@ -147,6 +147,7 @@ impl Plugin for UiSpringPlugin {
             SpringPropertyPlugin::<ScrollOffset>::default(),
         ))
         .register_type::<LayoutSpring>()
+        .register_type::<PopLayout>()
         .register_type::<LayoutOffset>()
         .register_type::<MomentumScroll>()
         .register_type::<ScrollMotion>()
@@ -176,6 +177,15 @@ impl Plugin for UiSpringPlugin {
                         .before(update_clipping_system),
                 )
                     .run_if(any_with_component::<MomentumScroll>),
+            );
+        });
+        // With the first node that pops out of layout: before layout, so the frame its exit
+        // starts is laid out without it.
+        add_systems_on_first_use(app, &[TypeId::of::<PopLayout>()], PostUpdate, |schedule| {
+            schedule.add_systems(
+                layout::pop_exiting
+                    .before(UiSystems::Prepare)
+                    .run_if(any_with_component::<PopLayout>),
             );
         });
         // With the first layout spring: after layout placed the nodes, and before the clipping
