@@ -1,7 +1,8 @@
 //! Structural chaos: seeded random worlds in which entities are spawned, cloned and despawned
 //! (also by observers of the plugin's own events), spring components are inserted, replaced and
 //! removed, the components they move are removed and come back, hierarchies change, entities are
-//! disabled and hidden, clocks pause and hitch, drags start and end, and NaN, infinite and huge
+//! disabled and hidden, clocks pause and hitch, followed leaders teleport (told or not), list
+//! rows pop out of layout as they leave, drags start and end, and NaN, infinite and huge
 //! values arrive through the setters, through reflection and through the properties themselves.
 //!
 //! After every frame: every value the plugin writes is finite, every event went to a live
@@ -625,6 +626,8 @@ const OPERATIONS: &[(&str, fn(&mut World))] = &[
     ("layer", layer),
     ("chain", chain),
     ("inertia", inertia),
+    ("teleport", teleport),
+    ("list exit", list_exit),
 ];
 
 /// A live entity to operate on (of `kind`, if given), with the operation noted in its story.
@@ -713,9 +716,10 @@ fn follow(world: &mut World) {
         return;
     };
     let leader = live(world, Some(Kind::Leader)).unwrap_or(Entity::PLACEHOLDER);
-    let (offset, fixed, look) = draw(world, |random| {
+    let (offset, fixed, look, teleports) = draw(world, |random| {
         (
             Translation::value(random) / 100.0,
+            random.chance(0.5),
             random.chance(0.5),
             random.chance(0.5),
         )
@@ -732,7 +736,63 @@ fn follow(world: &mut World) {
     if look {
         follow = follow.looking_at(Vec3::ZERO);
     }
+    if teleports {
+        follow = follow.with_teleport_distance(1000.0);
+    }
     follower.insert(follow);
+}
+
+/// A leader (which followers and rigs may frame) is carried far in one frame — a respawn —
+/// told with `TargetWarped` or not (a follower or rig with a teleport distance catches it).
+fn teleport(world: &mut World) {
+    let Some(leader) = target_of(world, Some(Kind::Leader), "teleport") else {
+        return;
+    };
+    let (jump, told) = draw(world, |random| {
+        (Translation::value(random) * 50.0, random.chance(0.5))
+    });
+    if let Some(mut transform) = world.get_mut::<Transform>(leader) {
+        transform.translation += jump;
+    }
+    if told {
+        world.trigger(TargetWarped {
+            entity: leader,
+            delta: jump,
+        });
+    }
+}
+
+/// A UI node in a list: given a presence that pops out of layout as it leaves, sent out,
+/// called back, or stripped of it.
+fn list_exit(world: &mut World) {
+    let Some(entity) = target_of(world, Some(Kind::Node), "list exit") else {
+        return;
+    };
+    let (choice, to) = draw(world, |random| {
+        (random.below(4), UiTransformTranslation::value(random))
+    });
+    match choice {
+        0 => {
+            world.entity_mut(entity).insert((
+                Presence::default(),
+                PopLayout,
+                UiTransformTranslationSpring::new(Spring::snappy(), Val2::ZERO),
+                ExitTo::<UiTransformTranslation>(to),
+            ));
+        }
+        1 => {
+            world.commands().entity(entity).despawn_after_exit();
+        }
+        2 => {
+            world.commands().entity(entity).cancel_exit();
+        }
+        _ => {
+            world
+                .entity_mut(entity)
+                .remove::<(PopLayout, ExitTo<UiTransformTranslation>)>();
+        }
+    }
+    world.flush();
 }
 
 /// A camera rig on a new entity framing live (or despawned) leaders and bodies, orthographic
