@@ -301,8 +301,11 @@ impl Plugin for SpringChainPlugin {
             PostUpdate,
             |schedule| {
                 schedule.add_systems(
-                    systems::step_chains
-                        .in_set(ChainSystems)
+                    (
+                        systems::warn_jointless,
+                        systems::step_chains.in_set(ChainSystems),
+                    )
+                        .chain()
                         .run_if(any_with_component::<SpringChain>),
                 );
             },

@@ -244,13 +244,6 @@ fn rebuild(entity: Entity, chain: &mut SpringChain, world: &ChainWorld) {
         }
         next += 1;
     }
-    if found.len() == 1 && chain.end.is_none() {
-        warn_once!(
-            "bevy_sprung: {entity} has a SpringChain but no child joints (children with a \
-             Transform) and no end bone: nothing can turn; put the chain on the first bone of \
-             a hierarchy, or give it an end with SpringChain::with_end"
-        );
-    }
     let deepest = found
         .iter()
         .map(|&(_, _, depth)| depth)
@@ -737,4 +730,29 @@ fn arc(from: Vec3A, from_length: f32, to: Vec3A, planar: bool) -> Quat {
         return Quat::from_xyzw(across.x, across.y, across.z, 0.0);
     }
     Quat::from_vec4(from.cross(to).extend(w)).normalize()
+}
+
+/// Warns once (per app) about a chain that got a `SpringChain` with no child joints (children
+/// with a `Transform`) and no end bone: it has no bone, so nothing turns. Run where the
+/// spawning commands have been applied, so children spawned with it are seen.
+pub(super) fn warn_jointless(
+    chains: Query<(Entity, &SpringChain, Option<&Children>), Added<SpringChain>>,
+    transforms: Query<(), With<Transform>>,
+    mut warned: Local<bool>,
+) {
+    if *warned {
+        return;
+    }
+    let jointless = chains.iter().find(|(_, chain, children)| {
+        chain.end.is_none()
+            && !children.is_some_and(|children| children.iter().any(|c| transforms.contains(c)))
+    });
+    if let Some((entity, ..)) = jointless {
+        *warned = true;
+        warn!(
+            "bevy_sprung: {entity} has a SpringChain but no child joints (children with a \
+             Transform) and no end bone: nothing can turn; put the chain on the first bone of \
+             a hierarchy, or give it an end with SpringChain::with_end"
+        );
+    }
 }

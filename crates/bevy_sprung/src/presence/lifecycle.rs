@@ -307,10 +307,12 @@ pub(super) fn turn_property<P: SpringProperty>(
         Has<EnterFrom<P>>,
     )>,
     springless_exits: Query<(), (With<ExitTo<P>>, Without<PropertySpring<P>>)>,
+    mut warned: Local<bool>,
 ) {
     let Ok((mut spring, component, mut held, exit, entering)) = springs.get_mut(turn.entity) else {
-        if turn.to == TurnTo::Exit && springless_exits.contains(turn.entity) {
-            warn_once!(
+        if turn.to == TurnTo::Exit && springless_exits.contains(turn.entity) && !*warned {
+            *warned = true;
+            warn!(
                 "bevy_sprung: {} has an ExitTo<{path}> but no PropertySpring<{path}>: its exit \
                  has nothing to move, so it is despawned at once; add the spring that moves \
                  {path} (the ExitTo value is where it heads)",
