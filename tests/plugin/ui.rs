@@ -205,15 +205,131 @@ fn length_number(value: Val) -> f32 {
     }
 }
 
+/// One operation of the `NodeSize` chaos below, on one of `nodes`.
+fn size_operation(app: &mut App, nodes: &[Entity], random: &mut crate::harness::Random) {
+    let node = random.pick(nodes);
+    let spring = random.pick(&[
+        Spring::bouncy(),
+        Spring::wobbly(),
+        Spring::snappy(),
+        Spring::from_natural_frequency(30.0, 0.05).unwrap(),
+    ]);
+    let target = size(random);
+    let kick = Vec2::new(random.symmetric(5e3), random.symmetric(5e3));
+    let operation = random.below(14);
+    let mut entity = app.world_mut().entity_mut(node);
+    let has_spring = entity.contains::<NodeSizeSpring>();
+    match operation {
+        0 => {
+            entity.insert(NodeSizeSpring::new(spring, target).with_velocity(kick));
+        }
+        1 => {
+            entity.remove::<NodeSizeSpring>();
+        }
+        2 | 3 if has_spring => {
+            entity
+                .get_mut::<NodeSizeSpring>()
+                .unwrap()
+                .set_target(target);
+        }
+        4 if has_spring => {
+            entity
+                .get_mut::<NodeSizeSpring>()
+                .unwrap()
+                .add_impulse(kick);
+        }
+        5 if has_spring => {
+            entity
+                .get_mut::<NodeSizeSpring>()
+                .unwrap()
+                .set_velocity(kick);
+        }
+        6 if has_spring => {
+            let rate = kick * 0.05;
+            entity
+                .get_mut::<NodeSizeSpring>()
+                .unwrap()
+                .set_target_velocity(rate);
+        }
+        7 => {
+            if entity.contains::<SpringSequence<NodeSize>>() {
+                entity.remove::<SpringSequence<NodeSize>>();
+            } else {
+                let steps = [size(random), size(random), size(random)];
+                entity.insert(
+                    SpringSequence::<NodeSize>::new()
+                        .then(steps[0])
+                        .then_after(random.unit() * 0.3, steps[1])
+                        .then_within(2.0, steps[2])
+                        .with_spring(spring),
+                );
+            }
+        }
+        8 => {
+            let written = size(random);
+            if let Some(mut node) = entity.get_mut::<Node>() {
+                (node.width, node.height) = (written.x, written.y);
+            }
+        }
+        11 => {
+            let skipping = entity
+                .get::<bevy_sprung::spring::SkipFrames>()
+                .is_some_and(|skip| skip.0);
+            entity.insert(bevy_sprung::spring::SkipFrames(!skipping));
+        }
+        12 => {
+            if entity.contains::<Node>() {
+                entity.remove::<Node>();
+            } else {
+                entity.insert(Node::default());
+            }
+        }
+        13 => {
+            let steps = [size(random), size(random)];
+            entity.insert(
+                SpringSequence::<NodeSize>::new()
+                    .then(steps[0])
+                    .then(steps[1])
+                    .ping_pong(),
+            );
+        }
+        9 | 10 => clock_operation(app, operation, random),
+        _ => {}
+    }
+}
+
+/// A clock operation of the `NodeSize` chaos: the game pauses or resumes, or the frame time
+/// changes (a rate from 30 to 240 fps, or a hitch).
+fn clock_operation(app: &mut App, operation: usize, random: &mut crate::harness::Random) {
+    use crate::harness::frame;
+    use bevy::time::TimeUpdateStrategy;
+    use std::time::Duration;
+    if operation == 9 {
+        let paused = random.chance(0.5);
+        let mut time = app.world_mut().resource_mut::<Time<Virtual>>();
+        if paused {
+            time.pause();
+        } else {
+            time.unpause();
+        }
+    } else {
+        let hitch = random.chance(0.3);
+        let step = if hitch {
+            Duration::from_secs_f32(random.unit() * 0.25)
+        } else {
+            frame(random.pick(&[30, 60, 144, 240]))
+        };
+        app.insert_resource(TimeUpdateStrategy::ManualDuration(step));
+    }
+}
+
 /// `NodeSize` never passes through zero, on any path: springs inserted (with a velocity),
 /// replaced and removed, targets in mixed units, sequences started and stopped over them,
 /// kicks and velocities of any size, moving targets, values written by hand, pauses and
 /// hitches. Every target is at least zero; no width or height drawn is ever below it.
 #[test]
 fn a_node_size_never_passes_through_zero_on_any_path() {
-    use crate::harness::{Random, frame};
-    use bevy::time::TimeUpdateStrategy;
-    use std::time::Duration;
+    use crate::harness::Random;
     for seed in 0..8_u64 {
         let mut random = Random(seed);
         let mut app = app(60);
@@ -222,111 +338,7 @@ fn a_node_size_never_passes_through_zero_on_any_path() {
             .collect();
         for frame_index in 0..1500 {
             for _ in 0..4 {
-                let node = random.pick(&nodes);
-                let spring = random.pick(&[
-                    Spring::bouncy(),
-                    Spring::wobbly(),
-                    Spring::snappy(),
-                    Spring::from_natural_frequency(30.0, 0.05).unwrap(),
-                ]);
-                let target = size(&mut random);
-                let kick = Vec2::new(random.symmetric(5e3), random.symmetric(5e3));
-                let operation = random.below(14);
-                let mut entity = app.world_mut().entity_mut(node);
-                let has_spring = entity.contains::<NodeSizeSpring>();
-                match operation {
-                    0 => {
-                        entity.insert(NodeSizeSpring::new(spring, target).with_velocity(kick));
-                    }
-                    1 => {
-                        entity.remove::<NodeSizeSpring>();
-                    }
-                    2 | 3 if has_spring => {
-                        entity
-                            .get_mut::<NodeSizeSpring>()
-                            .unwrap()
-                            .set_target(target);
-                    }
-                    4 if has_spring => {
-                        entity
-                            .get_mut::<NodeSizeSpring>()
-                            .unwrap()
-                            .add_impulse(kick);
-                    }
-                    5 if has_spring => {
-                        entity
-                            .get_mut::<NodeSizeSpring>()
-                            .unwrap()
-                            .set_velocity(kick);
-                    }
-                    6 if has_spring => {
-                        let rate = kick * 0.05;
-                        entity
-                            .get_mut::<NodeSizeSpring>()
-                            .unwrap()
-                            .set_target_velocity(rate);
-                    }
-                    7 => {
-                        if entity.contains::<SpringSequence<NodeSize>>() {
-                            entity.remove::<SpringSequence<NodeSize>>();
-                        } else {
-                            let steps = [size(&mut random), size(&mut random), size(&mut random)];
-                            entity.insert(
-                                SpringSequence::<NodeSize>::new()
-                                    .then(steps[0])
-                                    .then_after(random.unit() * 0.3, steps[1])
-                                    .then_within(2.0, steps[2])
-                                    .with_spring(spring),
-                            );
-                        }
-                    }
-                    8 => {
-                        let written = size(&mut random);
-                        if let Some(mut node) = entity.get_mut::<Node>() {
-                            (node.width, node.height) = (written.x, written.y);
-                        }
-                    }
-                    11 => {
-                        let skipping = entity
-                            .get::<bevy_sprung::spring::SkipFrames>()
-                            .is_some_and(|skip| skip.0);
-                        entity.insert(bevy_sprung::spring::SkipFrames(!skipping));
-                    }
-                    12 => {
-                        if entity.contains::<Node>() {
-                            entity.remove::<Node>();
-                        } else {
-                            entity.insert(Node::default());
-                        }
-                    }
-                    13 => {
-                        let steps = [size(&mut random), size(&mut random)];
-                        entity.insert(
-                            SpringSequence::<NodeSize>::new()
-                                .then(steps[0])
-                                .then(steps[1])
-                                .ping_pong(),
-                        );
-                    }
-                    9 => {
-                        let paused = random.chance(0.5);
-                        let mut time = app.world_mut().resource_mut::<Time<Virtual>>();
-                        if paused {
-                            time.pause();
-                        } else {
-                            time.unpause();
-                        }
-                    }
-                    _ => {
-                        let hitch = random.chance(0.3);
-                        let step = if hitch {
-                            Duration::from_secs_f32(random.unit() * 0.25)
-                        } else {
-                            frame(random.pick(&[30, 60, 144, 240]))
-                        };
-                        app.insert_resource(TimeUpdateStrategy::ManualDuration(step));
-                    }
-                }
+                size_operation(&mut app, &nodes, &mut random);
             }
             app.update();
             for &node in &nodes {
