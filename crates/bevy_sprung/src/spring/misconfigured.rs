@@ -2,7 +2,8 @@
 //! without the component it moves, a spring whose property was never added, a feature's
 //! component without the spring it drives.
 
-#[cfg(feature = "camera")]
+use core::fmt::Display;
+
 use bevy::ecs::query::QueryFilter;
 use bevy::prelude::*;
 use bevy::utils::prelude::ShortName;
@@ -14,27 +15,14 @@ use bevy::utils::prelude::ShortName;
 pub(crate) fn warn_missing<C: Component, R: Component>(
     fix: &'static str,
 ) -> impl FnMut(Query<Entity, (Added<C>, Without<R>)>, Local<bool>) {
-    move |missing, mut warned| {
-        if *warned {
-            return;
-        }
-        if let Some(entity) = missing.iter().next() {
-            *warned = true;
-            warn!(
-                "bevy_sprung: {entity} has a {} but no {}: {fix}",
-                ShortName::of::<C>(),
-                ShortName::of::<R>()
-            );
-        }
-    }
+    warn_lacking::<C, Without<R>>(ShortName::of::<R>(), fix)
 }
 
-#[cfg(feature = "camera")]
 /// A system that warns once about the entities that got a `C` (since it last ran) and match
 /// `F` (what they lack, as filters: `(Without<A>, Without<B>)` for "neither A nor B"), naming
 /// the first such entity, `C`, `missing` and `fix`. Run as [`warn_missing`] is.
 pub(crate) fn warn_lacking<C: Component, F: QueryFilter + 'static>(
-    missing: &'static str,
+    missing: impl Display + Send + Sync + 'static,
     fix: &'static str,
 ) -> impl FnMut(Query<Entity, (Added<C>, F)>, Local<bool>) {
     move |lacking, mut warned| {

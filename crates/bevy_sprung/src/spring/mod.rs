@@ -30,7 +30,13 @@ pub use skip::SkipFrames;
 
 pub(crate) use event::{property_event, trigger_if_alive};
 pub(crate) use first_use::{add_property_systems, add_systems_on_first_use, first_use};
-#[cfg(feature = "camera")]
+#[cfg_attr(
+    not(feature = "camera"),
+    expect(
+        unused_imports,
+        reason = "only the camera rig names what it lacks by filters"
+    )
+)]
 pub(crate) use misconfigured::warn_lacking;
 pub(crate) use misconfigured::warn_missing;
 pub(crate) use plugin::{is_registered, spring_schedule};

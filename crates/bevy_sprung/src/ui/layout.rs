@@ -264,6 +264,40 @@ impl LaidOutNode<'_> {
     }
 }
 
+/// What a node's layout box is read from: its own computed layout and drawn transform, and its
+/// parent.
+type LayoutParts<'a> = (
+    &'a ComputedNode,
+    &'a UiGlobalTransform,
+    &'a UiTransform,
+    &'a ComputedUiRenderTargetInfo,
+    Option<&'a IgnoreScroll>,
+    Option<&'a ChildOf>,
+);
+
+/// The layout box of the node of `parts`, and its parent's computed layout (if it has one).
+fn layout_box_of<'p>(
+    (node, global, transform, target, ignore_scroll, child_of): LayoutParts,
+    parents: &'p Query<(&ComputedNode, &UiGlobalTransform)>,
+) -> (LayoutBox, Option<&'p ComputedNode>) {
+    let parent = child_of.and_then(|child_of| {
+        let parent = child_of.parent();
+        parents
+            .get(parent)
+            .ok()
+            .map(|(node, global)| (parent, node, global))
+    });
+    let laid_out = LaidOutNode {
+        node,
+        global,
+        transform,
+        target,
+        ignore_scroll,
+    }
+    .layout_box(parent);
+    (laid_out, parent.map(|(_, node, _)| node))
+}
+
 /// After layout: each [`LayoutSpring`] node whose layout box changed is given the offset that
 /// draws it where it was; its springs carry it from there (keeping their velocities).
 pub(super) fn note_reflows(
@@ -274,14 +308,7 @@ pub(super) fn note_reflows(
             &mut LayoutOffset,
             &mut LayoutTranslationSpring,
             &mut LayoutScaleSpring,
-            (
-                &ComputedNode,
-                &UiGlobalTransform,
-                &UiTransform,
-                &ComputedUiRenderTargetInfo,
-                Option<&IgnoreScroll>,
-                Option<&ChildOf>,
-            ),
+            LayoutParts<'static>,
         ),
         Or<(
             Changed<UiGlobalTransform>,
@@ -296,22 +323,7 @@ pub(super) fn note_reflows(
             translation.set_spring(config.spring);
             scale.set_spring(config.spring);
         }
-        let (node, global, transform, target, ignore_scroll, child_of) = node;
-        let parent = child_of.and_then(|child_of| {
-            let parent = child_of.parent();
-            parents
-                .get(parent)
-                .ok()
-                .map(|(node, global)| (parent, node, global))
-        });
-        let now = LaidOutNode {
-            node,
-            global,
-            transform,
-            target,
-            ignore_scroll,
-        }
-        .layout_box(parent);
+        let (now, _) = layout_box_of(node, &parents);
         let before = laid_out.0.replace(now);
         if now.is_hidden() {
             // Hidden (`Display::None` lays a node out with no size): nothing is drawn, and
@@ -504,14 +516,7 @@ pub(super) fn pop_exiting(
             &Presence,
             &mut Node,
             Option<&Popped>,
-            (
-                &ComputedNode,
-                &UiGlobalTransform,
-                &UiTransform,
-                &ComputedUiRenderTargetInfo,
-                Option<&IgnoreScroll>,
-                Option<&ChildOf>,
-            ),
+            LayoutParts<'static>,
         ),
         (With<PopLayout>, Changed<Presence>),
     >,
@@ -521,25 +526,10 @@ pub(super) fn pop_exiting(
     for (entity, presence, mut node, popped, laid) in &mut nodes {
         match (presence.is_exiting(), popped) {
             (true, None) => {
-                let (computed, global, transform, target, ignore_scroll, child_of) = laid;
-                let parent = child_of.and_then(|child_of| {
-                    let parent = child_of.parent();
-                    parents
-                        .get(parent)
-                        .ok()
-                        .map(|(node, global)| (parent, node, global))
-                });
-                let border = parent.map_or(Vec2::ZERO, |(_, parent, _)| parent.border.min_inset);
-                let laid_out = LaidOutNode {
-                    node: computed,
-                    global,
-                    transform,
-                    target,
-                    ignore_scroll,
-                }
-                .layout_box(parent);
-                let popped =
-                    Popped::pop(&mut node, &laid_out, border, computed.inverse_scale_factor);
+                let inverse_scale = laid.0.inverse_scale_factor;
+                let (laid_out, parent) = layout_box_of(laid, &parents);
+                let border = parent.map_or(Vec2::ZERO, |parent| parent.border.min_inset);
+                let popped = Popped::pop(&mut node, &laid_out, border, inverse_scale);
                 commands.entity(entity).try_insert(popped);
             }
             (false, Some(popped)) => {
