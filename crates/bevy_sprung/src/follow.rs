@@ -97,43 +97,20 @@ pub struct TargetWarped {
     pub delta: Vec3,
 }
 
-/// How far a followed target was carried without travelling between `last` and `now`, having
-/// been expected to travel `expected` (its last velocity times the frame's step): all of the
-/// move beyond that if the move is further than `teleport_distance`, else the explicit warps
-/// `pending` (used up).
+/// How far a followed target was carried without travelling between `last` and `now` (zero if
+/// it travelled), having been expected to travel `expected` (its last velocity times the
+/// frame's step): all of the move beyond that if the move is further than
+/// `teleport_distance`, else the explicit warps `pending` (used up).
 pub(crate) fn take_warp(
     pending: &mut Vec3,
     teleport_distance: f32,
     (last, now): (Option<Vec3>, Vec3),
     expected: Vec3,
-) -> Warp {
+) -> Vec3 {
     let pending = core::mem::take(pending);
     match last.map(|last| now - last) {
-        Some(moved) if moved.length() > teleport_distance => Warp::Teleported(moved - expected),
-        _ if pending != Vec3::ZERO => Warp::Warped(pending),
-        _ => Warp::None,
-    }
-}
-
-/// What [`take_warp`] found.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Warp {
-    /// The target travelled.
-    None,
-    /// The target was warped by this (told): its motion besides is still measured.
-    Warped(Vec3),
-    /// The target moved further than the teleport distance in one frame: this much of it, all
-    /// but what its last velocity explains, is a jump.
-    Teleported(Vec3),
-}
-
-impl Warp {
-    /// How far the target jumped.
-    pub(crate) fn shift(self) -> Vec3 {
-        match self {
-            Self::None => Vec3::ZERO,
-            Self::Warped(shift) | Self::Teleported(shift) => shift,
-        }
+        Some(moved) if moved.length() > teleport_distance => moved - expected,
+        _ => pending,
     }
 }
 
@@ -319,7 +296,7 @@ fn follow_targets(
             let follow = &mut *follow;
             let expected = spring.target_velocity() * steps.dt(spring.clock());
             let (last, teleport) = (follow.last_frame_position, follow.teleport_distance);
-            let shift = take_warp(&mut follow.warp, teleport, (last, position), expected).shift();
+            let shift = take_warp(&mut follow.warp, teleport, (last, position), expected);
             if shift != Vec3::ZERO && shift.is_finite() {
                 // The target was carried, not moved: so is the follower, with its velocity.
                 follow.last_frame_position = last.map(|last| last + shift);

@@ -163,8 +163,7 @@ pub(super) fn track_goals(
             rig.rig.teleport_distance,
             (tracking.last_point, point),
             tracking.point_velocity * dt,
-        )
-        .shift();
+        );
         if shift != Vec3::ZERO && shift.is_finite() {
             // The goal was carried: so is the camera, keeping its framing and velocity (the
             // jump is not motion).
