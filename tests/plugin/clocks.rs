@@ -160,3 +160,92 @@ fn a_chain_sways_on_the_spring_clock() {
         }
     }
 }
+
+/// A squash from an impact plays while the game is paused on the real clock, and holds on the
+/// game clock.
+#[test]
+fn a_squash_plays_on_the_spring_clock() {
+    for clock in [SpringClock::Real, SpringClock::Game] {
+        let mut app = paused_app(clock);
+        let squashed = app
+            .world_mut()
+            .spawn((
+                Transform::default(),
+                TranslationSpring::new(Spring::snappy(), Vec3::ZERO),
+                SquashStretch::new(0.002, 1.5),
+            ))
+            .id();
+        run(&mut app, 2);
+        app.world_mut()
+            .get_mut::<SquashStretch>(squashed)
+            .unwrap()
+            .impact(Vec3::Y, 0.7);
+        let mut flattest = 1.0f32;
+        for _ in 0..60 {
+            app.update();
+            flattest = flattest.min(app.world().get::<Transform>(squashed).unwrap().scale.y);
+        }
+        match clock {
+            SpringClock::Real => assert!(flattest < 0.75, "no squash on the real clock"),
+            SpringClock::Game => assert_eq!(flattest, 1.0, "squashed while the game was paused"),
+        }
+    }
+}
+
+/// A sequence's hold counts on the spring clock: a toast shown in a pause menu leaves after its
+/// hold on the real clock; on the game clock it stays where it is while the game is paused.
+#[test]
+fn a_sequence_hold_counts_on_the_spring_clock() {
+    for clock in [SpringClock::Real, SpringClock::Game] {
+        let mut app = paused_app(clock);
+        let toast = app
+            .world_mut()
+            .spawn((
+                Transform::default(),
+                TranslationSpring::new(Spring::snappy(), Vec3::ZERO),
+                SpringSequence::<bevy_sprung::transform::Translation>::new()
+                    .hold(0.5)
+                    .then(Vec3::X * 100.0),
+            ))
+            .id();
+        run(&mut app, 20);
+        assert_eq!(
+            translation(&app, toast),
+            Vec3::ZERO,
+            "{clock:?}: left early"
+        );
+        run(&mut app, 120);
+        let x = translation(&app, toast).x;
+        match clock {
+            SpringClock::Real => assert!((x - 100.0).abs() < 1e-2, "held on the real clock: {x}"),
+            SpringClock::Game => assert_eq!(x, 0.0, "left while the game was paused"),
+        }
+    }
+}
+
+/// A flung puck coasts while the game is paused on the real clock, and stays put on the game
+/// clock.
+#[test]
+fn inertia_coasts_on_the_spring_clock() {
+    use bevy_sprung::inertia::Inertia;
+    for clock in [SpringClock::Real, SpringClock::Game] {
+        let mut app = paused_app(clock);
+        let puck = app
+            .world_mut()
+            .spawn((Transform::default(), Inertia::new(2.0)))
+            .id();
+        run(&mut app, 2);
+        app.world_mut()
+            .get_mut::<Inertia>(puck)
+            .unwrap()
+            .fling(Vec3::X * 300.0);
+        run(&mut app, 600);
+        let x = translation(&app, puck).x;
+        match clock {
+            SpringClock::Real => {
+                assert!((x - 150.0).abs() < 1e-2, "no coast on the real clock: {x}")
+            }
+            SpringClock::Game => assert_eq!(x, 0.0, "coasted while the game was paused"),
+        }
+    }
+}

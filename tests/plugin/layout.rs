@@ -635,6 +635,28 @@ fn a_fling_decays_exactly() {
     }
 }
 
+/// A fling in a pause menu's list coasts while the game is paused on the real clock; on the
+/// game clock the list holds where it was let go.
+#[test]
+fn a_fling_coasts_on_the_spring_clock() {
+    for clock in [SpringClock::Real, SpringClock::Game] {
+        let mut app = ui_app(60);
+        app.insert_resource(DefaultSpringClock(clock));
+        app.world_mut().resource_mut::<Time<Virtual>>().pause();
+        let (area, _) = spawn_scroll_area(&mut app, MomentumScroll::default());
+        run(&mut app, 3);
+        steer(&mut app, area, |scroll| scroll.drag_by(Vec2::Y * 1000.0));
+        app.update();
+        steer(&mut app, area, |scroll| scroll.fling(Vec2::Y * 800.0));
+        run(&mut app, 60);
+        let shown = scroll_position(&app, area);
+        match clock {
+            SpringClock::Real => assert!(shown > 1100.0, "no coast on the real clock: {shown}"),
+            SpringClock::Game => assert_eq!(shown, 1000.0, "coasted while the game was paused"),
+        }
+    }
+}
+
 /// A hard fling toward the end: the content is never drawn past the end by as much as the
 /// give, springs back, and rests exactly at the end.
 #[test]
