@@ -112,6 +112,41 @@ fn enters_from_its_start_and_leaves_once_its_exit_settled() {
     }
 }
 
+/// An exit ends where it stops showing, not on the last thousandth of a unit: the card goes
+/// within 0.2 s of coming within 1/100 of its travel on every spring (a smooth spring takes
+/// another 0.6 s from there to a thousandth of a unit), and never before that.
+#[test]
+fn an_exit_ends_at_a_visible_rest() {
+    for fps in [30, 60, 144, 240] {
+        let mut app = app(fps);
+        let (card, _) = spawn_card(&mut app);
+        run(&mut app, 3 * fps);
+        let scale_travel = (Vec3::ONE - Vec3::splat(0.5)).length();
+        exit(&mut app, card);
+        let mut near_since = None;
+        let mut frame = 0;
+        while app.world().get_entity(card).is_ok() {
+            let transform = *app.world().get::<Transform>(card).unwrap();
+            let near = transform.translation.distance(EXIT) <= EXIT.length() / 100.0
+                && (transform.scale - Vec3::splat(0.5)).length() <= scale_travel / 100.0;
+            if near {
+                near_since.get_or_insert(frame);
+            }
+            app.update();
+            frame += 1;
+            if app.world().get_entity(card).is_err() {
+                assert!(near, "{fps} fps: left {transform:?} short of its exit");
+            }
+            assert!(frame < 10 * fps, "{fps} fps: never left");
+        }
+        let lingered = f64::from(frame - near_since.unwrap()) / f64::from(fps);
+        assert!(
+            lingered <= 0.2,
+            "{fps} fps: went {lingered} s after it stopped showing"
+        );
+    }
+}
+
 /// Turned back mid-exit, the card moves exactly as a spring retargeted by hand at the same
 /// frames: position and velocity carry over, bit for bit.
 #[test]

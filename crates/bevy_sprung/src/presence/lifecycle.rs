@@ -8,12 +8,22 @@ use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
 
 use crate::choreography::{AllSpringsSettled, SpringGroup, report_when_settled};
+use bevy::math::NormedVectorSpace;
+use sprung::{RestThreshold, Spring};
+
 use crate::property::{SpringProperty, ValueOf};
+use crate::space::SpringSpace;
 use crate::spring::{PropertySpring, SpringTargetMut, trigger_if_alive};
 
 /// Makes an entity's arrival and departure spring: it enters from its [`EnterFrom<P>`] values,
 /// and [`despawn_after_exit`](PresenceCommands::despawn_after_exit) springs it to its
 /// [`ExitTo<P>`] values and despawns it (with its descendants) once they have settled.
+///
+/// An exit is done where it stops showing: while it leaves, each spring rests within 1/256 of
+/// the distance it travels (one step of an 8-bit channel for a full fade, under half a pixel
+/// of a 100 px slide), with the speed of equal energy, or within its own tolerances if those
+/// are coarser; a cancelled exit gets its own tolerances back. So the despawn does not wait
+/// for the invisible last thousandth of a unit.
 ///
 /// [`Entered`] is triggered when the entrance has settled, [`Exited`] just before the entity
 /// is despawned (it is still there for the observer). The settling is what
@@ -142,7 +152,7 @@ impl<P: SpringProperty> EnterFrom<P> {
         let Some(&Self(value)) = world.get::<Self>(context.entity) else {
             return;
         };
-        if !<P::Space as crate::space::SpringSpace>::is_valid(value) {
+        if !P::Space::is_valid(value) {
             warn_once!("bevy_sprung: refused a non-finite entering value {value:?}");
             return;
         }
@@ -161,14 +171,39 @@ impl<P: SpringProperty> EnterFrom<P> {
 pub struct ExitTo<P: SpringProperty>(pub ValueOf<P>);
 
 /// The target property `P`'s spring had when an exit began (restored if it is cancelled), or
-/// while its entrance waits (restored when it goes).
+/// while its entrance waits (restored when it goes); and during an exit, the spring's own rest
+/// tolerances (restored if it is cancelled).
 #[derive(Component)]
-pub(super) struct HeldTarget<P: SpringProperty>(Option<ValueOf<P>>);
+pub(super) struct HeldTarget<P: SpringProperty> {
+    target: Option<ValueOf<P>>,
+    rest: Option<RestThreshold<f32>>,
+}
 
 impl<P: SpringProperty> Default for HeldTarget<P> {
     fn default() -> Self {
-        Self(None)
+        Self {
+            target: None,
+            rest: None,
+        }
     }
+}
+
+/// The share of an exit's travel within which it counts as done: one step of an 8-bit
+/// channel for a full fade, under half a pixel of a 100 px slide.
+const EXIT_REST_SHARE: f32 = 1.0 / 256.0;
+
+/// The rest tolerances of a spring leaving over a distance `travel`: a share of the travel
+/// ([`EXIT_REST_SHARE`]) and the speed of equal energy, never finer than its own `rest`. An
+/// exit ends where it stops showing, not on the last thousandth of a unit.
+fn exit_rest(spring: &Spring<f32>, rest: RestThreshold<f32>, travel: f32) -> RestThreshold<f32> {
+    if !travel.is_finite() {
+        return rest;
+    }
+    let visible = RestThreshold::for_spring(spring, travel * EXIT_REST_SHARE);
+    RestThreshold::new(
+        visible.offset.max(rest.offset),
+        visible.speed.max(rest.speed),
+    )
 }
 
 impl<P: SpringProperty> Clone for EnterFrom<P> {
@@ -324,17 +359,27 @@ pub(super) fn turn_property<P: SpringProperty>(
     };
     let target = match (turn.to, exit) {
         (TurnTo::Exit, Some(exit)) => {
-            held.0 = Some(spring.target());
+            held.target = Some(spring.target());
+            let travel = P::Space::offset(P::get(component), exit.0).norm();
+            let rest = spring.rest();
+            held.rest = Some(rest);
+            let rest = exit_rest(spring.spring(), rest, travel);
+            spring.set_rest(rest);
             exit.0
         }
         (TurnTo::Wait, _) if entering => {
-            held.0 = Some(spring.target());
+            held.target = Some(spring.target());
             P::get(component)
         }
-        (TurnTo::Back | TurnTo::Go, _) => match held.0.take() {
-            Some(held) => held,
-            None => return,
-        },
+        (TurnTo::Back | TurnTo::Go, _) => {
+            if let Some(rest) = held.rest.take() {
+                spring.set_rest(rest);
+            }
+            match held.target.take() {
+                Some(held) => held,
+                None => return,
+            }
+        }
         _ => return,
     };
     spring.set_target_if_neq(target);
