@@ -231,3 +231,75 @@ fn squash_and_stretch_keep_volume() {
         );
     }
 }
+
+/// A body moved by gameplay (no translation spring) at a steady 300 units/s along x, child of
+/// a parent that also moves, carried 1e5 units in one frame (a respawn): told with
+/// `TargetWarped`, or caught by the teleport distance, the jump does not read as speed and the
+/// stretch stays where the steady motion holds it. Untold and uncaught, the jump is a frame at
+/// the stretch limit and the body visibly widens: what every case did before the fix.
+#[test]
+fn a_teleport_does_not_stretch_a_squashed_body() {
+    #[derive(Component)]
+    struct Mover;
+    #[derive(Resource, Default)]
+    struct Jump(bool, bool);
+    fn walk(
+        time: Res<Time>,
+        mut movers: Query<(Entity, &mut Transform, Has<SquashStretch>), With<Mover>>,
+        mut jump: ResMut<Jump>,
+        mut commands: Commands,
+    ) {
+        for (entity, mut transform, squashed) in &mut movers {
+            transform.translation.x += 150.0 * time.delta_secs();
+            if squashed && core::mem::take(&mut jump.0) {
+                let delta = Vec3::new(1e5, 0.0, 0.0);
+                transform.translation += delta;
+                if jump.1 {
+                    commands.trigger(TargetWarped { entity, delta });
+                }
+            }
+        }
+    }
+    for fps in [30, 60, 144] {
+        for (told, distance) in [
+            (true, f32::INFINITY),
+            (false, 1000.0),
+            (false, f32::INFINITY),
+        ] {
+            let mut app = app(fps);
+            app.init_resource::<Jump>().add_systems(Update, walk);
+            let parent = app.world_mut().spawn((Transform::default(), Mover)).id();
+            let body = app
+                .world_mut()
+                .spawn((
+                    Transform::default(),
+                    Mover,
+                    SquashStretch::new(0.001, 1.5).with_teleport_distance(distance),
+                    ChildOf(parent),
+                ))
+                .id();
+            run(&mut app, 2 * fps);
+            let steady = app.world().get::<Transform>(body).unwrap().scale.x;
+            // 300 units/s in the world: 1.3× along x, reached and held.
+            assert!((steady - 1.3).abs() < 1e-3, "{fps} fps: {steady}");
+            app.world_mut().resource_mut::<Jump>().0 = true;
+            app.world_mut().resource_mut::<Jump>().1 = told;
+            let mut widest = steady;
+            for _ in 0..fps {
+                app.update();
+                widest = widest.max(app.world().get::<Transform>(body).unwrap().scale.x);
+            }
+            if told || distance.is_finite() {
+                assert!(
+                    widest - steady < 1e-3,
+                    "{fps} fps, told {told}, distance {distance}: stretched to {widest}"
+                );
+            } else {
+                assert!(
+                    widest - steady > 5e-3,
+                    "{fps} fps: the untold jump reads as speed: {widest}"
+                );
+            }
+        }
+    }
+}

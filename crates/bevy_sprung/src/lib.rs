@@ -100,6 +100,7 @@ mod rubber_band;
 pub mod space;
 pub mod spin;
 pub mod spring;
+pub mod tracking;
 pub mod transform;
 #[cfg(feature = "ui")]
 pub mod ui;
@@ -124,6 +125,12 @@ pub mod guides {
     #[cfg(feature = "ui")]
     #[doc = include_str!("../docs/ui.md")]
     pub mod ui {}
+
+    /// Secondary motion, concept by concept: each Dynamic Bone, SwiftUI additive-animation and
+    /// react-spring `decay` idea — spring chains, layers, squash and stretch, inertia — and the
+    /// code that does it.
+    #[doc = include_str!("../docs/motion.md")]
+    pub mod motion {}
 
     /// Camera rigs, concept by concept: each Cinemachine, smooth-bevy-cameras and `bevy_dolly`
     /// idea and the code that does it with [`CameraRig`](crate::camera::CameraRig).
@@ -172,7 +179,7 @@ pub mod prelude {
     pub use crate::color::{BackgroundTint, BorderTint, ImageColorSpring, ImageTint, TextTint};
     #[cfg(feature = "sprite")]
     pub use crate::color::{SpriteColor, SpriteColorSpring};
-    pub use crate::follow::{SpringFollow, TargetMotion, TargetWarped};
+    pub use crate::follow::{SpringFollow, TargetMotion};
     pub use crate::implicit::ImplicitSpring;
     pub use crate::inertia::Inertia;
     #[cfg(feature = "picking")]
@@ -201,6 +208,7 @@ pub mod prelude {
         SpringTargetMut, SpringWoke,
     };
     pub use crate::spring_property;
+    pub use crate::tracking::TargetWarped;
     pub use crate::transform::{
         Rotation, RotationSpring, Scale, ScaleSpring, SignedScale, SignedScaleSpring, Translation,
         TranslationSpring,

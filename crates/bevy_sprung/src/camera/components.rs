@@ -96,7 +96,7 @@ pub struct CameraRig {
     /// targets (a respawn, a level change): the camera moves with it, keeping its framing and
     /// velocity, instead of reading the jump as motion (which would fling a
     /// [`LookAhead`] far past the target). Infinite (never) by default;
-    /// [`TargetWarped`](crate::follow::TargetWarped) on a target says so explicitly.
+    /// [`TargetWarped`](crate::tracking::TargetWarped) on a target says so explicitly.
     pub teleport_distance: f32,
 }
 
@@ -832,7 +832,7 @@ pub(crate) struct RigTracking {
     pub(crate) last_centre: Option<Vec3>,
     /// The zoom the rig aimed for last frame, for its rate.
     pub(crate) last_zoom: Option<f32>,
-    /// Explicit warps of the goal ([`TargetWarped`](crate::follow::TargetWarped) on its
+    /// Explicit warps of the goal ([`TargetWarped`](crate::tracking::TargetWarped) on its
     /// targets, by their shares) not yet applied.
     pub(crate) warp: Vec3,
     /// The goal was carried this frame: the centre keeps last frame's velocity.

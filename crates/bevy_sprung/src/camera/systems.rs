@@ -13,10 +13,9 @@ use super::components::{
 };
 use super::view::{centre_range, ease_into, goal_range, view_area, viewport_size};
 use crate::clock::SpringTime;
-use crate::follow::{
-    FixedSamples, TargetMotion, TargetWarped, WorldPositions, fixed_sample, take_warp,
-};
+use crate::follow::{FixedSamples, TargetMotion, fixed_sample};
 use crate::spring::SpringTargetMut;
+use crate::tracking::{TargetWarped, WorldPositions, take_warp};
 
 /// After each fixed step: where the targets of rigs whose targets move in `FixedUpdate` are.
 pub(super) fn sample_fixed_targets(mut rigs: Query<&mut CameraTargets>, positions: WorldPositions) {

@@ -8,6 +8,7 @@ use sprung::Spring;
 use crate::clock::SpringTime;
 use crate::layers::{LayerSystems, SpringLayers};
 use crate::spring::{SpringMotion, SpringSystems, add_systems_on_first_use};
+use crate::tracking::{TargetWarped, WorldPositions, take_warp};
 use crate::transform::{Scale, Translation};
 
 /// What a [`SquashStretch`] keeps while it deforms.
@@ -29,8 +30,10 @@ pub enum Conserve {
 /// component.
 ///
 /// The velocity is the entity's [`TranslationSpring`](crate::transform::TranslationSpring)'s
-/// (its [`SpringMotion`]'s) when it has one, otherwise how far its
-/// `GlobalTransform` moved over the last frame (anything that moves it: physics, a parent). The
+/// (its [`SpringMotion`]'s) when it has one, otherwise how far it moved in the world over the
+/// last frame (anything that moves it: physics, a parent),
+/// leaving out a teleport (a [`TargetWarped`] on the entity, or a move in one frame further than
+/// [`teleport_distance`](Self::teleport_distance), which keeps the last frame's velocity). The
 /// stretch it asks for is `1 + stretch_per_speed·speed`, at most `max_stretch`, along the
 /// velocity in the entity's local axes; the deformation springs toward that with `spring`, so
 /// when the entity stops short (a landing) the spring's momentum carries on into a squash
@@ -79,6 +82,10 @@ pub struct SquashStretch {
     pub spring: Spring<f32>,
     /// What the deformation keeps.
     pub conserve: Conserve,
+    /// For an entity without a translation spring: a frame in which it moves further than this
+    /// (world units) is a teleport, not a frame of enormous speed. Infinite (never) by
+    /// default; a [`TargetWarped`] says so explicitly.
+    pub teleport_distance: f32,
     #[reflect(ignore)]
     #[cfg_attr(feature = "serde", serde(skip))]
     motion: SquashMotion,
@@ -90,8 +97,12 @@ struct SquashMotion {
     /// The logarithm of the scale per local axis, and its rate.
     stretch: Vec3,
     rate: Vec3,
-    /// Where the entity was last frame, for entities without a translation spring.
+    /// Where the entity was last frame and how fast it moved, for entities without a
+    /// translation spring.
     last_position: Option<Vec3>,
+    last_velocity: Vec3,
+    /// Explicit warps since the last frame ([`TargetWarped`]), left out of the velocity.
+    warp: Vec3,
     /// The deformation rests: nothing to step or write until the entity moves.
     resting: bool,
 }
@@ -110,8 +121,16 @@ impl SquashStretch {
             max_stretch,
             spring: Spring::bouncy(),
             conserve: Conserve::Volume,
+            teleport_distance: f32::INFINITY,
             motion: SquashMotion::default(),
         }
+    }
+
+    /// The same, treating a move further than `distance` in one frame as a teleport.
+    #[must_use]
+    pub fn with_teleport_distance(mut self, distance: f32) -> Self {
+        self.teleport_distance = distance;
+        self
     }
 
     /// The same, conserving `conserve`.
@@ -156,6 +175,34 @@ impl SquashStretch {
     }
 }
 
+impl SquashStretch {
+    /// The velocity of an entity without a translation spring, now at `position` after a frame
+    /// of `dt`: how far it moved, less any teleport.
+    fn velocity_from(&mut self, position: Vec3, dt: f32) -> Vec3 {
+        let motion = &mut self.motion;
+        let last = motion.last_position.replace(position);
+        let expected = motion.last_velocity * dt;
+        let shift = take_warp(
+            &mut motion.warp,
+            self.teleport_distance,
+            (last, position),
+            expected,
+        );
+        let velocity = last.map_or(Vec3::ZERO, |last| (position - last - shift) / dt);
+        motion.last_velocity = velocity;
+        velocity
+    }
+}
+
+/// A [`TargetWarped`]: a squashed entity leaves the jump out of its next velocity.
+fn note_warps(warped: On<TargetWarped>, mut bodies: Query<&mut SquashStretch>) {
+    if let Ok(mut squash) = bodies.get_mut(warped.entity)
+        && warped.delta.is_finite()
+    {
+        squash.bypass_change_detection().motion.warp += warped.delta;
+    }
+}
+
 /// The per-axis logarithms of a stretch by `e^log` along the unit `direction` (a squash for a
 /// negative `log`) that keep the volume (area): they sum to zero.
 fn logarithms(log: f32, direction: Vec3, conserve: Conserve) -> Vec3 {
@@ -186,26 +233,25 @@ pub struct Squash;
 fn squash_and_stretch(
     time: SpringTime,
     mut bodies: Query<(
+        Entity,
         &mut SquashStretch,
         &mut SpringLayers<Scale>,
         &Transform,
-        &GlobalTransform,
         Option<&SpringMotion<Translation>>,
     )>,
+    positions: WorldPositions,
 ) {
     let dt = time.delta(None);
     if !(dt > 0.0 && dt.is_finite()) {
         return;
     }
-    for (mut squash, mut layers, transform, global, motion) in &mut bodies {
+    for (entity, mut squash, mut layers, transform, motion) in &mut bodies {
         let squash = squash.bypass_change_detection();
-        let position = global.translation();
-        let velocity = match (motion, squash.motion.last_position) {
+        let velocity = match (motion, positions.of(entity)) {
             (Some(motion), _) => motion.velocity(),
-            (None, Some(last)) => (position - last) / dt,
+            (None, Some(position)) => squash.velocity_from(position, dt),
             (None, None) => Vec3::ZERO,
         };
-        squash.motion.last_position = Some(position);
         let local = transform.rotation.inverse() * velocity;
         let local = match squash.conserve {
             Conserve::Volume => local,
@@ -265,7 +311,8 @@ fn fold_squash(
 pub(super) fn build(app: &mut App) {
     app.register_type::<SquashStretch>()
         .register_type::<Conserve>()
-        .add_observer(fold_squash);
+        .add_observer(fold_squash)
+        .add_observer(note_warps);
     crate::layers::add_layered_property::<Scale>(app);
     // With the first squash and stretch.
     let squashes = [core::any::TypeId::of::<SquashStretch>()];
