@@ -97,6 +97,23 @@ pub fn run<M: Method>(scenario: &Scenario, reference: &[f64]) -> Outcome {
     }
 }
 
+/// The error used for ranking: unstable and non-finite outcomes count as infinite.
+#[must_use]
+pub fn ranked_error(outcome: &Outcome) -> f64 {
+    if outcome.status == Status::Stable {
+        outcome.max_error
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// The median of `values` (the upper one for an even count); NaN when empty.
+#[must_use]
+pub fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,7 +6,7 @@ use std::path::Path;
 use plotters::prelude::*;
 
 use crate::Study;
-use crate::report::{median, ranked_error};
+use crate::evaluate::{median, ranked_error};
 use crate::scenario::{self, Family};
 
 /// Errors are drawn no lower than this (an exact 0 would be off a log axis).

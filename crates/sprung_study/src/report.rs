@@ -2,7 +2,7 @@
 
 use std::fmt::Write as _;
 
-use crate::evaluate::{Outcome, Status};
+use crate::evaluate::{Outcome, Status, median, ranked_error};
 use crate::methods::{
     ExactCached, ExactRecomputed, JuckettClosedForm, Method, NaiveClosedForm, SemiImplicitEuler,
 };
@@ -29,23 +29,6 @@ fn cell(outcome: &Outcome) -> String {
         Status::Unstable => format!("off ({})", error(outcome.max_error)),
         Status::NonFinite => "NaN".into(),
     }
-}
-
-/// The error used for ranking: unstable and non-finite outcomes count as infinite.
-#[must_use]
-pub fn ranked_error(outcome: &Outcome) -> f64 {
-    if outcome.status == Status::Stable {
-        outcome.max_error
-    } else {
-        f64::INFINITY
-    }
-}
-
-/// The median of `values` (the upper one for an even count); NaN when empty.
-#[must_use]
-pub fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
 /// A markdown table from a header and rows.
