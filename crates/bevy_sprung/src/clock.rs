@@ -35,13 +35,27 @@ pub enum SpringClock {
 pub struct DefaultSpringClock(pub SpringClock);
 
 /// The one source of time in the crate: this frame's step and the elapsed time on each spring
-/// clock. Every timed system reads it (springs, stagger delays, shake, squash, chains, scroll
-/// and drag samples), so a pause menu on [`SpringClock::Real`] moves all of them alike.
+/// clock, and where the fixed-timestep clock stands. Every timed system reads it (springs,
+/// stagger delays, shake, squash, chains, scroll and drag samples, targets that move in
+/// `FixedUpdate`), so a pause menu on [`SpringClock::Real`] moves all of them alike; nothing
+/// else in the crate reads Bevy's `Time`.
 #[derive(SystemParam)]
 pub(crate) struct SpringTime<'w> {
     time: Res<'w, Time>,
     real: Res<'w, Time<Real>>,
+    fixed: Res<'w, Time<Fixed>>,
     default: Res<'w, DefaultSpringClock>,
+}
+
+/// Where the fixed-timestep clock stands within this frame: its step, and how far past its
+/// last step the frame is (Bevy's overstep), in seconds. What places a target that moves in
+/// `FixedUpdate` between its steps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct FixedStep {
+    /// The fixed timestep.
+    pub(crate) timestep: f32,
+    /// The time accumulated since the last fixed step.
+    pub(crate) overstep: f32,
 }
 
 /// This frame's time steps, read once per system run: by clock, and for springs that use the
@@ -78,6 +92,14 @@ impl SpringTime<'_> {
     #[cfg(feature = "picking")]
     pub(crate) fn pointer_now(&self) -> f64 {
         self.elapsed(Some(SpringClock::Real))
+    }
+
+    /// Where the fixed-timestep clock stands within this frame.
+    pub(crate) fn fixed_step(&self) -> FixedStep {
+        FixedStep {
+            timestep: self.fixed.timestep().as_secs_f32(),
+            overstep: self.fixed.overstep().as_secs_f32(),
+        }
     }
 
     /// The time steps of this frame.

@@ -7,7 +7,7 @@ use bevy::ecs::world::DeferredWorld;
 use bevy::log::warn_once;
 use bevy::prelude::*;
 
-use crate::clock::SpringTime;
+use crate::clock::{FixedStep, SpringTime};
 use crate::spring::{PropertySystems, SpringTargetMut, SpringUpdate, add_systems_on_first_use};
 use crate::tracking::{TargetWarped, WorldPositions, take_warp};
 use crate::transform::{Rotation, RotationSpring, Translation, TranslationSpring};
@@ -202,7 +202,6 @@ fn sample_fixed_targets(mut followers: Query<&mut SpringFollow>, positions: Worl
 /// comes to rest on its last goal: its target stops moving.
 fn follow_targets(
     time: SpringTime,
-    fixed_time: Res<Time<Fixed>>,
     mut followers: Query<(Entity, &mut SpringFollow, &mut TranslationSpring)>,
     mut world: ParamSet<(WorldPositions, Query<&mut Transform>)>,
     mut carried: Local<Vec<(Entity, Vec3)>>,
@@ -241,9 +240,9 @@ fn follow_targets(
                     };
                     Some((position, velocity))
                 }
-                TargetMotion::FixedTimestep => {
-                    Some(fixed_sample(follow.fixed, &fixed_time).unwrap_or((position, Vec3::ZERO)))
-                }
+                TargetMotion::FixedTimestep => Some(
+                    fixed_sample(follow.fixed, time.fixed_step()).unwrap_or((position, Vec3::ZERO)),
+                ),
             },
         };
         let Some((position, velocity)) = sample else {
@@ -270,10 +269,7 @@ fn follow_targets(
 
 /// Where a target that moves in `FixedUpdate` is this frame, and its velocity, from its last
 /// two fixed-step samples; from one, where it stands.
-pub(crate) fn fixed_sample(
-    samples: FixedSamples,
-    fixed_time: &Time<Fixed>,
-) -> Option<(Vec3, Vec3)> {
+pub(crate) fn fixed_sample(samples: FixedSamples, fixed: FixedStep) -> Option<(Vec3, Vec3)> {
     match samples {
         FixedSamples {
             previous: Some(previous),
@@ -281,11 +277,8 @@ pub(crate) fn fixed_sample(
         } => {
             // The target moved from `previous` to `latest` over one fixed step, and `overstep`
             // seconds of that motion have passed since.
-            let velocity = (latest - previous) / fixed_time.timestep().as_secs_f32();
-            Some((
-                latest + velocity * fixed_time.overstep().as_secs_f32(),
-                velocity,
-            ))
+            let velocity = (latest - previous) / fixed.timestep;
+            Some((latest + velocity * fixed.overstep, velocity))
         }
         FixedSamples {
             latest: Some(latest),

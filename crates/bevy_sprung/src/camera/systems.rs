@@ -40,7 +40,7 @@ pub(super) fn sample_fixed_targets(mut rigs: Query<&mut CameraTargets>, position
 pub(super) fn sample_targets(
     mut rigs: Query<(Entity, &CameraTargets, Option<&Transform>, &mut CameraGoal)>,
     positions: WorldPositions,
-    fixed_time: Res<Time<Fixed>>,
+    time: SpringTime,
 ) {
     for (rig, targets, transform, mut goal) in &mut rigs {
         let found = || {
@@ -54,7 +54,8 @@ pub(super) fn sample_targets(
                     let position = usable.then(|| positions.of(target.entity))??;
                     let position = match (targets.motion, targets.fixed.get(i)) {
                         (TargetMotion::FixedTimestep, Some(&samples)) => {
-                            fixed_sample(samples, &fixed_time).map_or(position, |(now, _)| now)
+                            fixed_sample(samples, time.fixed_step())
+                                .map_or(position, |(now, _)| now)
                         }
                         _ => position,
                     };
