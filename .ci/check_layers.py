@@ -10,6 +10,8 @@ path that is a file of the crate. Two rules, each failure printed with the impor
    and itself.
 2. No two files import each other in a circle (a strongly connected component of more than one
    file, or a file importing itself is not counted).
+3. One clock: only `clock.rs` reads Bevy's `Time` (every other file reads time through
+   `SpringTime`), so that everything timed follows the spring clock.
 
 `mod` declarations are structure, not imports. Exits 1 on a failure.
 """
@@ -119,12 +121,22 @@ def imports(path):
     """(module path imported, the text) for each reference to the crate's own items: `use`
     statements, and paths written in the code (`crate::a::b(…)`, `super::c::D`)."""
     code = strip(open(path, encoding="utf-8").read())
-    here = module_of(path)
-    statements = re.findall(r"\buse\s+([^;]+);", code)
-    rest = re.sub(r"\buse\s+[^;]+;", "", code)
-    paths = re.findall(r"\b(?:crate|super|self)(?:\s*::\s*\w+)+", rest)
+    file_module = module_of(path)
+    inline = inline_modules(code)
+
+    def module_at(position):
+        """The module path at `position`: the file's, inside any inline `mod name { … }`."""
+        return file_module + [name for start, end, name in inline if start < position < end]
+
+    statements = [(m.start(), m.group(1)) for m in re.finditer(r"\buse\s+([^;]+);", code)]
+    rest = re.sub(r"\buse\s+[^;]+;", lambda m: " " * len(m.group(0)), code)
+    # A visibility (`pub(in crate::ui)`) names a module but imports nothing.
+    rest = re.sub(r"\bpub\s*\(\s*in\s+[^)]*\)", lambda m: " " * len(m.group(0)), rest)
+    paths = [(m.start(), m.group(0))
+             for m in re.finditer(r"\b(?:crate|super|self)(?:\s*::\s*\w+)+", rest)]
     found = []
-    for statement in statements + paths:
+    for position, statement in statements + paths:
+        here = module_at(position)
         for item in expand(" ".join(statement.split())):
             item = re.sub(r"\s+as\s+\w+$", "", item.strip())
             names = [name for name in item.split("::") if name]
@@ -138,10 +150,30 @@ def imports(path):
                     if names.pop(0) == "super":
                         module = module[:-1]
                 module = module + names
+            elif file_of(here + names[:1]):
+                # A path from a child module (`use drag::X`, `pub use drag::X` in the file that
+                # declares `mod drag`): an edge to that child's file.
+                module = here + names
             else:
                 continue
             found.append((module, item))
     return found
+
+
+def inline_modules(code):
+    """(start, end, name) of each inline module `mod name { … }` of a file's code, outermost
+    first."""
+    spans = []
+    for match in re.finditer(r"\bmod\s+(\w+)\s*\{", code):
+        depth, i = 0, match.end() - 1
+        while i < len(code):
+            depth += code[i] == "{"
+            depth -= code[i] == "}"
+            if depth == 0:
+                break
+            i += 1
+        spans.append((match.start(), i, match.group(1)))
+    return spans
 
 
 def resolve(module):
@@ -154,8 +186,67 @@ def resolve(module):
 
 
 def main():
+    if sys.argv[1:] == ["--self-test"]:
+        self_test()
+        return
+    failures, count, files = check(SRC)
+    if failures:
+        print("check_layers:\n" + "\n".join(failures), file=sys.stderr)
+        sys.exit(1)
+    print(f"check_layers: {len(files)} files, {count} imports between them, no circle; "
+          "spring/ imports no feature; only clock.rs reads Bevy's Time")
+
+
+def self_test():
+    """Proves the check on crates written for it: each forms a circle through one kind of
+    import (a child's re-export, `crate::`, `super::`), and a crate without a circle passes."""
+    import tempfile
+    global SRC
+    cases = {
+        "a child re-exported by its parent, the child using the parent": {
+            "lib.rs": "mod a;\npub use a::Thing;\npub struct Root;\n",
+            "a.rs": "use crate::Root;\npub struct Thing(Root);\n",
+        },
+        "two features through crate:: paths": {
+            "lib.rs": "mod a;\nmod b;\n",
+            "a.rs": "use crate::b::B;\npub struct A;\n",
+            "b.rs": "pub(crate) fn f() -> crate::a::A { crate::a::A }\npub struct B;\n",
+        },
+        "a module and its child through super::": {
+            "lib.rs": "mod m;\n",
+            "m/mod.rs": "mod c;\npub use c::C;\npub struct M;\n",
+            "m/c.rs": "use super::M;\npub struct C(M);\n",
+        },
+    }
+    clean = {
+        "lib.rs": "mod a;\nmod b;\npub use b::B;\n",
+        "a.rs": "pub struct A;\n",
+        "b.rs": "use crate::a::A;\npub struct B(A);\n",
+    }
+    saved = SRC
+    try:
+        for name, files in list(cases.items()) + [("no circle", clean)]:
+            with tempfile.TemporaryDirectory() as root:
+                for path, text in files.items():
+                    os.makedirs(os.path.dirname(os.path.join(root, path)), exist_ok=True)
+                    with open(os.path.join(root, path), "w", encoding="utf-8") as out:
+                        out.write(text)
+                SRC = root
+                failures, _, _ = check(root)
+                found = any("circle" in failure for failure in failures)
+                if found != (files is not clean):
+                    print(f"check_layers self-test failed: {name}: {failures}", file=sys.stderr)
+                    sys.exit(1)
+    finally:
+        SRC = saved
+    print(f"check_layers self-test: {len(cases)} circles found, a clean crate passes")
+
+
+def check(src):
+    """The failures, the number of imports between files, and the files of the crate at
+    `src`."""
     files = []
-    for directory, _, names in os.walk(SRC):
+    for directory, _, names in os.walk(src):
         files.extend(os.path.join(directory, name) for name in names if name.endswith(".rs"))
     edges = {path: {} for path in files}
     failures = []
@@ -176,6 +267,13 @@ def main():
                     failures.append(
                         f"{os.path.relpath(path, SRC)} imports the top-level plugin: use {text}"
                     )
+    for path in sorted(files):
+        if os.path.relpath(path, src) != "clock.rs":
+            code = strip(open(path, encoding="utf-8").read())
+            if re.search(r"\bTime\b", code):
+                failures.append(
+                    f"{os.path.relpath(path, src)} reads Bevy's `Time`: read `SpringTime` instead"
+                )
     # Tarjan's strongly connected components.
     index, low, stack, on_stack, components = {}, {}, [], set(), []
     counter = [0]
@@ -215,12 +313,8 @@ def main():
                 if b in members
             ]
             failures.append("files that import each other in a circle:\n" + "\n".join(lines))
-    if failures:
-        print("check_layers:\n" + "\n".join(failures), file=sys.stderr)
-        sys.exit(1)
     count = sum(len(targets) for targets in edges.values())
-    print(f"check_layers: {len(files)} files, {count} imports between them, no circle; "
-          "spring/ imports no feature")
+    return failures, count, files
 
 
 if __name__ == "__main__":

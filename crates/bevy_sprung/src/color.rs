@@ -5,9 +5,6 @@
 //! colour that is a field of a larger component has a marker named after both: `SpriteColor`
 //! (`Sprite::color`), `ImageNodeColor` (`ImageNode::color`).
 
-use bevy::prelude::*;
-
-use crate::property_plugin::SpringPropertyPlugin;
 #[cfg(doc)]
 use crate::space::OklabColor;
 
@@ -135,39 +132,3 @@ pub use ui::{
 #[cfg(feature = "ui")]
 #[expect(deprecated, reason = "the old names, kept for a release")]
 pub use ui::{BackgroundTint, BorderTint, ImageColorSpring, ImageTint, TextTint};
-
-/// Springs the colours of sprites (feature `sprite`) and UI nodes (feature `ui`) in Oklab
-/// (part of [`SpringPlugin`](crate::SpringPlugin)). A `Color` field of your own springs with
-/// [`spring_property!`](crate::spring_property)`(… as OklabColor)`.
-#[derive(Debug, Default, Clone, Copy)]
-pub struct ColorSpringPlugin;
-
-impl Plugin for ColorSpringPlugin {
-    #[cfg_attr(
-        not(feature = "sprite"),
-        expect(
-            unused_variables,
-            reason = "with `color` alone there is no colour component to register"
-        )
-    )]
-    fn build(&self, app: &mut App) {
-        #[cfg(feature = "sprite")]
-        app.add_plugins(SpringPropertyPlugin::<SpriteColor>::default());
-        #[cfg(all(feature = "sprite", feature = "asset"))]
-        app.add_plugins(crate::asset::SequenceAssetPlugin::<SpriteColor>::default());
-        #[cfg(all(feature = "ui", feature = "asset"))]
-        app.add_plugins((
-            crate::asset::SequenceAssetPlugin::<BackgroundColor>::default(),
-            crate::asset::SequenceAssetPlugin::<BorderColor>::default(),
-            crate::asset::SequenceAssetPlugin::<TextColor>::default(),
-            crate::asset::SequenceAssetPlugin::<ImageNodeColor>::default(),
-        ));
-        #[cfg(feature = "ui")]
-        app.add_plugins((
-            SpringPropertyPlugin::<BackgroundColor>::default(),
-            SpringPropertyPlugin::<BorderColor>::default(),
-            SpringPropertyPlugin::<TextColor>::default(),
-            SpringPropertyPlugin::<ImageNodeColor>::default(),
-        ));
-    }
-}

@@ -42,17 +42,28 @@
 //!
 //! # Layout
 //! Each domain is a module with its own plugin, components and systems, and [`SpringPlugin`]
-//! adds them all. At the bottom, [`space`] (how values spring) and [`clock`]
-//! ([`SpringClockPlugin`](clock::SpringClockPlugin)); above them [`spring`], the mechanism
-//! every property shares ([`SpringSchedulePlugin`](spring::SpringSchedulePlugin),
-//! [`PropertyStepPlugin`](spring::PropertyStepPlugin), the sets and phases
-//! ([`PropertySystems`](spring::PropertySystems), [`SpringPhase`](spring::SpringPhase)) and the
-//! events ([`SpringSettled`](spring::SpringSettled), [`SpringWoke`](spring::SpringWoke))); and
-//! on top the features, which join the mechanism's sets or observe its events and which it
-//! never imports: [`choreography`], [`follow`], [`juice`], [`reduced_motion`], `interaction`,
-//! `asset` and `visibility` (behind their features), and the properties of [`transform`],
-//! [`spin`], `color` and `ui`. [`SpringPropertyPlugin`] adds one property with the mechanism
-//! and every feature's part of it. Add the domain plugins alone to spring only what you need.
+//! adds them all. No two files import each other in a circle. From the bottom up:
+//! - [`space`] (how values spring), [`clock`] (the one source of time,
+//!   [`SpringClockPlugin`](clock::SpringClockPlugin)), [`property`] (what a property is);
+//! - [`spring`], the mechanism every property shares
+//!   ([`SpringSchedulePlugin`](spring::SpringSchedulePlugin),
+//!   [`PropertyStepPlugin`](spring::PropertyStepPlugin), the sets and phases
+//!   ([`PropertySystems`](spring::PropertySystems), [`SpringPhase`](spring::SpringPhase)) and
+//!   the events ([`SpringSettled`](spring::SpringSettled), [`SpringWoke`](spring::SpringWoke)));
+//! - the properties, which define markers and aliases only: [`transform`], [`spin`], `color`,
+//!   `ui`;
+//! - small shared types below the features that use them: [`throw`] (release velocity, bounds,
+//!   snap points) and [`tracking`] (where a target is this frame, teleports);
+//! - the features, which join the mechanism's sets or observe its events and which it never
+//!   imports: [`choreography`], [`presence`] (built on choreography), [`follow`], `camera`
+//!   (built on follow), [`juice`] (built on [`layers`]), [`chain`], [`inertia`],
+//!   [`reduced_motion`], `interaction` (built on inertia), `asset` and `visibility` (behind
+//!   their features);
+//! - on top, [`SpringPropertyPlugin`], which adds one property with the mechanism and every
+//!   feature's part of it, the plugins of the built-in properties ([`TransformSpringPlugin`],
+//!   `ColorSpringPlugin`, `UiSpringPlugin`), and [`SpringPlugin`].
+//!
+//! Add the domain plugins alone to spring only what you need.
 //!
 //! # Features
 //! - `visibility`: [`CatchUpWhenHidden`](visibility::CatchUpWhenHidden), which needs
@@ -100,6 +111,7 @@ mod rubber_band;
 pub mod space;
 pub mod spin;
 pub mod spring;
+pub mod throw;
 pub mod tracking;
 pub mod transform;
 #[cfg(feature = "ui")]
@@ -108,7 +120,11 @@ pub mod ui;
 pub mod visibility;
 
 pub use plugin::SpringPlugin;
-pub use property_plugin::SpringPropertyPlugin;
+#[cfg(feature = "color")]
+pub use property_plugin::ColorSpringPlugin;
+#[cfg(feature = "ui")]
+pub use property_plugin::UiSpringPlugin;
+pub use property_plugin::{SpringPropertyPlugin, TransformSpringPlugin};
 
 /// Guides: long-form documentation.
 pub mod guides {

@@ -9,10 +9,10 @@ use crate::clock::{SpringClock, SpringClockPlugin};
 use crate::follow::FollowPlugin;
 use crate::juice::JuicePlugin;
 use crate::presence::PresencePlugin;
+use crate::property_plugin::TransformSpringPlugin;
 use crate::reduced_motion::ReducedMotionPlugin;
 use crate::spin::SpinPlugin;
 use crate::spring::SpringSchedulePlugin;
-use crate::transform::TransformSpringPlugin;
 
 /// Everything: springs for `Transform`s, whole turns ([`Spin`](crate::spin::Spin)), followers
 /// ([`SpringFollow`](crate::follow::SpringFollow)), and with their features colours, UI geometry
@@ -155,9 +155,9 @@ impl Plugin for SpringPlugin {
             crate::inertia::InertiaPlugin,
         ));
         #[cfg(feature = "color")]
-        app.add_plugins(crate::color::ColorSpringPlugin);
+        app.add_plugins(crate::property_plugin::ColorSpringPlugin);
         #[cfg(feature = "ui")]
-        app.add_plugins(crate::ui::UiSpringPlugin);
+        app.add_plugins(crate::property_plugin::UiSpringPlugin);
         #[cfg(feature = "visibility")]
         app.add_plugins(crate::visibility::CatchUpPlugin);
         #[cfg(feature = "asset")]

@@ -79,3 +79,111 @@ impl<P: SpringProperty> core::fmt::Debug for SpringPropertyPlugin<P> {
         write!(f, "SpringPropertyPlugin<{}>", P::short_type_path())
     }
 }
+
+/// Adds built-in property `P`: [`SpringPropertyPlugin<P>`], and with feature `asset` its
+/// sequences from files.
+#[cfg(feature = "asset")]
+fn add_built_in<P>(app: &mut App)
+where
+    P: SpringProperty,
+    crate::property::ValueOf<P>: serde::de::DeserializeOwned,
+{
+    app.add_plugins((
+        SpringPropertyPlugin::<P>::default(),
+        crate::asset::SequenceAssetPlugin::<P>::default(),
+    ));
+}
+
+/// Adds built-in property `P`: [`SpringPropertyPlugin<P>`].
+#[cfg(not(feature = "asset"))]
+fn add_built_in<P: SpringProperty>(app: &mut App) {
+    app.add_plugins(SpringPropertyPlugin::<P>::default());
+}
+
+/// Springs `Transform`s: [`TranslationSpring`](crate::transform::TranslationSpring),
+/// [`RotationSpring`](crate::transform::RotationSpring),
+/// [`ScaleSpring`](crate::transform::ScaleSpring) and
+/// [`SignedScaleSpring`](crate::transform::SignedScaleSpring), and whole turns
+/// ([`SpinAngleSpring`](crate::spin::SpinAngleSpring)) (part of
+/// [`SpringPlugin`](crate::SpringPlugin)).
+#[derive(Debug, Default, Clone, Copy)]
+pub struct TransformSpringPlugin;
+
+impl Plugin for TransformSpringPlugin {
+    fn build(&self, app: &mut App) {
+        use crate::transform::{Rotation, Scale, SignedScale, Translation};
+        add_built_in::<Translation>(app);
+        add_built_in::<Rotation>(app);
+        add_built_in::<Scale>(app);
+        add_built_in::<SignedScale>(app);
+        add_built_in::<crate::spin::SpinAngle>(app);
+    }
+}
+
+/// Springs the colours of sprites (feature `sprite`) and UI nodes (feature `ui`) in Oklab
+/// (part of [`SpringPlugin`](crate::SpringPlugin)). A `Color` field of your own springs with
+/// [`spring_property!`](crate::spring_property)`(… as OklabColor)`.
+#[cfg(feature = "color")]
+#[derive(Debug, Default, Clone, Copy)]
+pub struct ColorSpringPlugin;
+
+#[cfg(feature = "color")]
+impl Plugin for ColorSpringPlugin {
+    #[cfg_attr(
+        not(any(feature = "sprite", feature = "ui")),
+        expect(
+            unused_variables,
+            reason = "with `color` alone there is no colour component to register"
+        )
+    )]
+    fn build(&self, app: &mut App) {
+        #[cfg(feature = "sprite")]
+        add_built_in::<crate::color::SpriteColor>(app);
+        #[cfg(feature = "ui")]
+        {
+            use crate::color::ImageNodeColor;
+            add_built_in::<BackgroundColor>(app);
+            add_built_in::<BorderColor>(app);
+            add_built_in::<TextColor>(app);
+            add_built_in::<ImageNodeColor>(app);
+        }
+    }
+}
+
+/// Springs UI geometry: `UiTransform` translation, scale and rotation and `Node` sizes and
+/// offsets, with layout transitions and momentum scrolling
+/// ([`UiLayoutPlugin`](crate::ui::UiLayoutPlugin)) (part of
+/// [`SpringPlugin`](crate::SpringPlugin) with feature `ui`; UI colours are in
+/// [`ColorSpringPlugin`]).
+#[cfg(feature = "ui")]
+#[derive(Debug, Default, Clone, Copy)]
+pub struct UiSpringPlugin;
+
+#[cfg(feature = "ui")]
+impl Plugin for UiSpringPlugin {
+    fn build(&self, app: &mut App) {
+        use crate::ui::{
+            LayoutScale, LayoutTranslation, NodeBottom, NodeHeight, NodeLeft, NodePosition,
+            NodeRight, NodeSize, NodeTop, NodeWidth, ScrollOffset, UiLayoutPlugin,
+            UiTransformRotation, UiTransformScale, UiTransformTranslation,
+        };
+        add_built_in::<UiTransformTranslation>(app);
+        add_built_in::<UiTransformScale>(app);
+        add_built_in::<UiTransformRotation>(app);
+        add_built_in::<NodeSize>(app);
+        add_built_in::<NodePosition>(app);
+        add_built_in::<NodeWidth>(app);
+        add_built_in::<NodeHeight>(app);
+        add_built_in::<NodeLeft>(app);
+        add_built_in::<NodeTop>(app);
+        add_built_in::<NodeRight>(app);
+        add_built_in::<NodeBottom>(app);
+        // Layout offsets and scroll positions: no sequences from files.
+        app.add_plugins((
+            SpringPropertyPlugin::<LayoutTranslation>::default(),
+            SpringPropertyPlugin::<LayoutScale>::default(),
+            SpringPropertyPlugin::<ScrollOffset>::default(),
+            UiLayoutPlugin,
+        ));
+    }
+}

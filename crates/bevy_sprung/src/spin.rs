@@ -4,7 +4,6 @@ use core::any::TypeId;
 
 use bevy::prelude::*;
 
-use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::Linear;
 use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_systems};
 
@@ -135,7 +134,9 @@ fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
     }
 }
 
-/// [`Spin`] and [`SpinAngleSpring`]: whole turns (part of [`SpringPlugin`](crate::SpringPlugin)).
+/// [`Spin`]: whole turns (part of [`SpringPlugin`](crate::SpringPlugin), which also adds the
+/// [`SpinAngle`] property its spring moves, in
+/// [`TransformSpringPlugin`](crate::TransformSpringPlugin)).
 /// A spin sets the rotation right after its spring stepped, in the spin property's
 /// [`SpringPhase::Observe`], so it is ordered with every other property that writes a
 /// `Transform`.
@@ -144,10 +145,7 @@ pub struct SpinPlugin;
 
 impl Plugin for SpinPlugin {
     fn build(&self, app: &mut App) {
-        #[cfg(feature = "asset")]
-        app.add_plugins(crate::asset::SequenceAssetPlugin::<SpinAngle>::default());
-        app.add_plugins(SpringPropertyPlugin::<SpinAngle>::default())
-            .register_type::<Spin>();
+        app.register_type::<Spin>();
         let springs = [TypeId::of::<PropertySpring<SpinAngle>>()];
         add_property_systems(app, &springs, |schedule| {
             schedule.add_systems(

@@ -3,7 +3,6 @@
 use bevy::prelude::*;
 use sprung::RestThreshold;
 
-use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Linear, NeverThroughZero, ShortestArc};
 use crate::spring::PropertySpring;
 
@@ -45,26 +44,3 @@ pub type RotationSpring = PropertySpring<Rotation>;
 pub type ScaleSpring = PropertySpring<Scale>;
 /// A spring on [`Transform::scale`] that may pass through zero (mirror).
 pub type SignedScaleSpring = PropertySpring<SignedScale>;
-
-/// Springs `Transform`s: [`TranslationSpring`], [`RotationSpring`], [`ScaleSpring`] and
-/// [`SignedScaleSpring`] (part of [`SpringPlugin`](crate::SpringPlugin)).
-#[derive(Debug, Default, Clone, Copy)]
-pub struct TransformSpringPlugin;
-
-impl Plugin for TransformSpringPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_plugins((
-            SpringPropertyPlugin::<Translation>::default(),
-            SpringPropertyPlugin::<Rotation>::default(),
-            SpringPropertyPlugin::<Scale>::default(),
-            SpringPropertyPlugin::<SignedScale>::default(),
-        ));
-        #[cfg(feature = "asset")]
-        app.add_plugins((
-            crate::asset::SequenceAssetPlugin::<Translation>::default(),
-            crate::asset::SequenceAssetPlugin::<Rotation>::default(),
-            crate::asset::SequenceAssetPlugin::<Scale>::default(),
-            crate::asset::SequenceAssetPlugin::<SignedScale>::default(),
-        ));
-    }
-}

@@ -8,12 +8,11 @@ use bevy::picking::pointer::{Location, PointerButton, PointerId};
 use bevy::prelude::*;
 use sprung::Spring;
 
-use super::InteractionState;
-use super::velocity::ReleaseVelocity;
+use super::state::{InteractionState, PointerContacts, start_dragging};
 use crate::clock::SpringTime;
 use crate::inertia::Inertia;
-pub use crate::inertia::{DragBounds, Snap, SnapLine};
 use crate::spring::trigger_if_alive;
+use crate::throw::{DragBounds, ReleaseVelocity, Snap};
 use crate::transform::TranslationSpring;
 #[cfg(feature = "ui")]
 use crate::ui::UiTransformTranslationSpring;
@@ -674,9 +673,41 @@ fn end_drag(
     );
 }
 
+/// A primary-button drag starts: the entity is dragged at once, unless its [`SpringDrag`] has
+/// a threshold to pass first.
+fn on_drag_start(
+    event: On<Pointer<DragStart>>,
+    mut contacts: Query<&mut PointerContacts>,
+    drags: Query<&SpringDrag>,
+) {
+    // An entity with a drag threshold is dragged once the pointer passes it (`on_drag`).
+    let engaged = drags
+        .get(event.entity)
+        .map_or(true, |drag| drag.engages(Vec2::ZERO));
+    if event.button == PointerButton::Primary && engaged {
+        start_dragging(&mut contacts, event.entity, event.pointer_id);
+    }
+}
+
+/// A drag moves: an entity whose [`SpringDrag`] has a threshold is dragged once past it.
+fn on_drag(
+    event: On<Pointer<Drag>>,
+    mut contacts: Query<&mut PointerContacts>,
+    drags: Query<&SpringDrag>,
+) {
+    if event.button == PointerButton::Primary
+        && let Ok(drag) = drags.get(event.entity)
+        && drag.engages(event.distance)
+    {
+        start_dragging(&mut contacts, event.entity, event.pointer_id);
+    }
+}
+
 pub(super) fn build(app: &mut App) {
     app.register_type::<SpringDrag>()
         .register_type::<DragFollow>()
+        .add_observer(on_drag_start)
+        .add_observer(on_drag)
         .add_observer(start_drag)
         .add_observer(continue_drag)
         .add_observer(end_drag);

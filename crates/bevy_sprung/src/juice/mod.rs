@@ -19,19 +19,12 @@ mod punch;
 mod shake;
 mod squash;
 
-pub use shake::Shake;
+pub use shake::{JuiceSystems, Shake};
 pub use squash::{Conserve, Squash, SquashStretch};
 
 use bevy::app::AnimationSystems;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
-
-/// The juice systems that write `Transform`s: in `PostUpdate`, after the springs and their
-/// layers (`AnimationSystems`) and before transform propagation, the [`Shake`]s are added.
-/// (A shake is taken off again in `PreUpdate`, before the layers.) [`SquashStretch`] is a
-/// layer: it runs before [`LayerSystems`](crate::layers::LayerSystems).
-#[derive(SystemSet, Debug, Clone, PartialEq, Eq, Hash)]
-pub struct JuiceSystems;
 
 /// [`Shake`] and [`SquashStretch`] (part of [`SpringPlugin`](crate::SpringPlugin)): a shake
 /// is added in `PostUpdate` after the springs (`AnimationSystems`) and before transform

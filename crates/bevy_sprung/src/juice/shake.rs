@@ -4,9 +4,16 @@ use bevy::log::warn_once;
 use bevy::prelude::*;
 use sprung::Spring;
 
-use super::JuiceSystems;
 use crate::clock::SpringTime;
 use crate::spring::add_systems_on_first_use;
+
+/// The juice systems that write `Transform`s: in `PostUpdate`, after the springs and their
+/// layers (`AnimationSystems`) and before transform propagation, the [`Shake`]s are added.
+/// (A shake is taken off again in `PreUpdate`, before the layers.)
+/// [`SquashStretch`](super::SquashStretch) is a layer: it runs before
+/// [`LayerSystems`](crate::layers::LayerSystems).
+#[derive(SystemSet, Debug, Clone, PartialEq, Eq, Hash)]
+pub struct JuiceSystems;
 
 /// Three translation and three rotation channels.
 const CHANNELS: usize = 6;

@@ -3,7 +3,7 @@
 use bevy::color::{Color, ColorToComponents, LinearRgba, Oklaba};
 use bevy::math::Vec4;
 
-use super::SpringSpace;
+use super::spring_space::SpringSpace;
 
 /// A `Color`, sprung in Oklab (lightness, a, b) plus alpha.
 ///

@@ -3,7 +3,8 @@
 use bevy::math::Vec2;
 use bevy::ui::{Val, Val2};
 
-use super::{AffineSpace, Carried, SpringSpace};
+use super::linear::AffineSpace;
+use super::spring_space::{Carried, SpringSpace};
 
 /// The number of a length in its own unit (pixels for `Px`, percent for `Percent`, …); 0 for
 /// `Auto`.
@@ -263,7 +264,8 @@ mod tests {
     use bevy::math::Vec2;
     use bevy::ui::{Val, Val2};
 
-    use super::{Carried, Length2, SpringSpace};
+    use super::Length2;
+    use crate::space::spring_space::{Carried, SpringSpace};
 
     /// Lengths in every unit and `Auto`, with numbers at the edges: zeros of both signs, a
     /// subnormal, the largest, an infinity and NaN.

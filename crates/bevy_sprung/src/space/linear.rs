@@ -5,7 +5,8 @@ use core::marker::PhantomData;
 use bevy::math::{Vec3, Vec3A};
 use bevy::reflect::{FromReflect, Reflectable};
 
-use super::{Carried, SpringSpace, SpringVector};
+use super::spring_space::{Carried, SpringSpace};
+use super::vector::SpringVector;
 
 /// A value that is itself a vector: the offset is `value − target`. Positions, sizes, volumes,
 /// angles, anything a tween would lerp.

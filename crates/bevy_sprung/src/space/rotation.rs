@@ -2,7 +2,7 @@
 
 use bevy::math::{DQuat, Quat, Rot2, Vec3, Vec3A};
 
-use super::{Carried, SpringSpace};
+use super::spring_space::{Carried, SpringSpace};
 
 /// A 3D rotation (`Quat`), sprung on the rotation vector of the shortest arc from the target,
 /// with an angular velocity in rad/s.

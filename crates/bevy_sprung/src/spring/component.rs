@@ -1,11 +1,9 @@
 //! The spring component and its sleep marker.
 
-mod step;
+pub(super) mod step;
 mod ticket;
 
 use ticket::SlotTicket;
-
-pub(crate) use step::{Stepped, Transitions, Unchanged, Unusual, UsualStep};
 
 use core::any::TypeId;
 use core::fmt;

@@ -7,9 +7,8 @@ use bevy::prelude::*;
 use bevy::utils::Parallel;
 
 use super::cache::TransitionCache;
-use super::component::{
-    PropertySpring, SpringAsleep, SpringMotion, Stepped, Transitions, Unchanged, Unusual, UsualStep,
-};
+use super::component::step::{Stepped, Transitions, Unchanged, Unusual, UsualStep};
+use super::component::{PropertySpring, SpringAsleep, SpringMotion};
 use super::event::{SpringSettled, SpringWoke};
 use super::parallel::{SplitRows, scope_threads, split_over_threads};
 use super::preference::{KeepMotion, ReducedMotion};
@@ -532,7 +531,7 @@ fn put_to_sleep<P: SpringProperty>(commands: &ParallelCommands, entity: Entity) 
         commands
             .entity(entity)
             .try_insert(SpringAsleep::<P>::default());
-        super::trigger_if_alive(&mut commands, SpringSettled::<P>::new(entity));
+        super::event::trigger_if_alive(&mut commands, SpringSettled::<P>::new(entity));
     });
 }
 
@@ -560,7 +559,7 @@ pub(crate) fn wake_springs<P: SpringProperty>(
     // hears of it.
     let mut wake = |entity: Entity| {
         commands.entity(entity).try_remove::<SpringAsleep<P>>();
-        super::trigger_if_alive(&mut commands, SpringWoke::<P>::new(entity));
+        super::event::trigger_if_alive(&mut commands, SpringWoke::<P>::new(entity));
     };
     let Ok(tables) = asleep.contiguous_iter() else {
         // Not reached (the components are in tables): the same, spring by spring.

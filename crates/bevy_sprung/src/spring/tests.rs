@@ -8,7 +8,8 @@ use proptest::prelude::*;
 use sprung::{RestThreshold, Scalar, Spring, SpringState};
 
 use super::cache::TransitionCache;
-use super::component::{PropertySpring, SpringMotion, Stepped, Transitions};
+use super::component::step::{Stepped, Transitions};
+use super::component::{PropertySpring, SpringMotion};
 use super::table::TransitionTable;
 use crate::clock::FrameSteps;
 use crate::space::{Linear, NeverThroughZero};

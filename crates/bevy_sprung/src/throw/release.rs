@@ -18,7 +18,7 @@ use bevy::prelude::*;
 /// # Example
 /// ```
 /// use bevy::prelude::*;
-/// use bevy_sprung::interaction::ReleaseVelocity;
+/// use bevy_sprung::throw::ReleaseVelocity;
 ///
 /// let mut estimate = ReleaseVelocity::default();
 /// for frame in 0..30 {

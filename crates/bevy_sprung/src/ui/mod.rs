@@ -21,7 +21,6 @@ use bevy::prelude::*;
 use bevy::ui::UiSystems;
 use bevy::ui::update::update_clipping_system;
 
-use crate::property_plugin::SpringPropertyPlugin;
 use crate::space::{Length, Length2, Linear, NeverThroughZero, ShortestAngle};
 use crate::spring::{
     PropertySpring, PropertySystems, SpringPhase, SpringUpdate, add_systems_on_first_use,
@@ -121,37 +120,20 @@ pub type UiScaleSpring = UiTransformScaleSpring;
 #[deprecated(since = "0.1.0", note = "renamed `UiTransformRotationSpring`")]
 pub type UiRotationSpring = UiTransformRotationSpring;
 
-/// Springs UI geometry: `UiTransform` translation, scale and rotation and `Node` sizes and
-/// offsets, and layout transitions ([`LayoutSpring`]) (part of
-/// [`SpringPlugin`](crate::SpringPlugin) with feature `ui`; UI colours are in
-/// [`ColorSpringPlugin`](crate::color::ColorSpringPlugin)).
+/// Layout transitions ([`LayoutSpring`], [`PopLayout`]) and momentum scrolling
+/// ([`MomentumScroll`]): their systems join the frame with their first component. Part of
+/// [`UiSpringPlugin`](crate::UiSpringPlugin), which also adds the properties they move.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct UiSpringPlugin;
+pub struct UiLayoutPlugin;
 
-impl Plugin for UiSpringPlugin {
+impl Plugin for UiLayoutPlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins((
-            SpringPropertyPlugin::<UiTransformTranslation>::default(),
-            SpringPropertyPlugin::<UiTransformScale>::default(),
-            SpringPropertyPlugin::<UiTransformRotation>::default(),
-            SpringPropertyPlugin::<NodeSize>::default(),
-            SpringPropertyPlugin::<NodePosition>::default(),
-            SpringPropertyPlugin::<NodeWidth>::default(),
-            SpringPropertyPlugin::<NodeHeight>::default(),
-            SpringPropertyPlugin::<NodeLeft>::default(),
-            SpringPropertyPlugin::<NodeTop>::default(),
-            SpringPropertyPlugin::<NodeRight>::default(),
-            SpringPropertyPlugin::<NodeBottom>::default(),
-            SpringPropertyPlugin::<LayoutTranslation>::default(),
-            SpringPropertyPlugin::<LayoutScale>::default(),
-            SpringPropertyPlugin::<ScrollOffset>::default(),
-        ))
-        .register_type::<LayoutSpring>()
-        .register_type::<PopLayout>()
-        .register_type::<LayoutOffset>()
-        .register_type::<MomentumScroll>()
-        .register_type::<ScrollMotion>()
-        .add_observer(scroll::announce_settled);
+        app.register_type::<LayoutSpring>()
+            .register_type::<PopLayout>()
+            .register_type::<LayoutOffset>()
+            .register_type::<MomentumScroll>()
+            .register_type::<ScrollMotion>()
+            .add_observer(scroll::announce_settled);
         #[cfg(feature = "picking")]
         app.add_observer(scroll::pointer::wheel)
             .add_observer(scroll::pointer::start)
@@ -204,22 +186,5 @@ impl Plugin for UiSpringPlugin {
                 );
             },
         );
-        #[cfg(feature = "asset")]
-        {
-            use crate::asset::SequenceAssetPlugin;
-            app.add_plugins((
-                SequenceAssetPlugin::<UiTransformTranslation>::default(),
-                SequenceAssetPlugin::<UiTransformScale>::default(),
-                SequenceAssetPlugin::<UiTransformRotation>::default(),
-                SequenceAssetPlugin::<NodeSize>::default(),
-                SequenceAssetPlugin::<NodePosition>::default(),
-                SequenceAssetPlugin::<NodeWidth>::default(),
-                SequenceAssetPlugin::<NodeHeight>::default(),
-                SequenceAssetPlugin::<NodeLeft>::default(),
-                SequenceAssetPlugin::<NodeTop>::default(),
-                SequenceAssetPlugin::<NodeRight>::default(),
-                SequenceAssetPlugin::<NodeBottom>::default(),
-            ));
-        }
     }
 }

@@ -401,7 +401,7 @@ pub(super) mod pointer {
 
     use super::MomentumScroll;
     use crate::clock::SpringTime;
-    use crate::interaction::ReleaseVelocity;
+    use crate::throw::ReleaseVelocity;
 
     /// The path of the pointer dragging an area, for its release velocity.
     #[derive(Component, Default)]
