@@ -243,7 +243,7 @@ fn inertia_coasts_on_the_spring_clock() {
         let x = translation(&app, puck).x;
         match clock {
             SpringClock::Real => {
-                assert!((x - 150.0).abs() < 1e-2, "no coast on the real clock: {x}")
+                assert!((x - 150.0).abs() < 1e-2, "no coast on the real clock: {x}");
             }
             SpringClock::Game => assert_eq!(x, 0.0, "coasted while the game was paused"),
         }
