@@ -61,7 +61,7 @@ fn main() {
                 }),
                 ..default()
             }),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .insert_resource(Time::<Fixed>::from_hz(64.0))
         .insert_resource(Smoothing::Spring)

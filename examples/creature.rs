@@ -43,7 +43,7 @@ struct Cursor {
 
 fn main() {
     App::new()
-        .add_plugins((DefaultPlugins, SpringPlugin::default()))
+        .add_plugins((DefaultPlugins, SpringPlugins::default()))
         .add_plugins((
             SpringLayerPlugin::<Scale, Hover>::default(),
             SpringLayerPlugin::<Scale, Punch>::default(),

@@ -59,7 +59,7 @@ fn main() {
                 }),
                 ..default()
             }),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .init_resource::<Selected>()
         .init_resource::<Cycle>()

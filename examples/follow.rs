@@ -44,7 +44,7 @@ fn main() {
                 }),
                 ..default()
             }),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.05, 0.06, 0.09)))
         .init_resource::<CursorMoved>()

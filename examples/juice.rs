@@ -188,7 +188,7 @@ fn main() {
                 }),
                 ..default()
             }),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.08, 0.09, 0.12)))
         .init_resource::<LastEvent>()

@@ -92,7 +92,7 @@ fn main() {
                 }),
                 ..default()
             }),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.06, 0.07, 0.09)))
         .insert_resource(Inventory {

@@ -92,7 +92,7 @@ fn main() {
                 ..default()
             }),
             // Menus animate while the game is paused: springs on the real clock.
-            SpringPlugin::default().with_clock(SpringClock::Real),
+            SpringPlugins::default().with_clock(SpringClock::Real),
         ))
         .insert_resource(ClearColor(Color::srgb(0.06, 0.07, 0.09)))
         .init_resource::<Settings>()

@@ -45,7 +45,7 @@ fn main() {
                 }),
                 ..default()
             }),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.55, 0.7, 0.85)))
         .insert_resource(GlobalAmbientLight {

@@ -73,7 +73,7 @@ fn main() {
                 }),
                 ..default()
             }),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.08, 0.08, 0.12)))
         .init_resource::<Manual>()

@@ -48,7 +48,7 @@ fn main() {
                 ..default()
             }),
             FrameTimeDiagnosticsPlugin::default(),
-            SpringPlugin::default(),
+            SpringPlugins::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.04, 0.05, 0.07)))
         .init_resource::<Wave>()

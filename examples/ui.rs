@@ -67,7 +67,7 @@ fn main() {
                 ..default()
             }),
             // UI keeps animating while the game is paused: springs on the real clock.
-            SpringPlugin::default().with_clock(SpringClock::Real),
+            SpringPlugins::default().with_clock(SpringClock::Real),
         ))
         .insert_resource(ClearColor(Color::srgb(0.07, 0.08, 0.1)))
         .init_resource::<Menu>()

@@ -1,4 +1,4 @@
-//! The springs step on a compute pool of two threads, as `SpringPlugin`'s docs set it up: the
+//! The springs step on a compute pool of two threads, as `SpringPlugins`'s docs set it up: the
 //! table's springs stepped in parallel chunks (more than 2048 rows), and the transition table
 //! prepared in parallel chunks (more than 4096 distinct springs). A test binary of its own:
 //! Bevy's task pools are made once per process, and the other tests use the default pools.
@@ -43,7 +43,7 @@ fn springs_step_exactly_on_two_compute_threads() {
     app.add_plugins((
         MinimalPlugins.set(TaskPoolPlugin { task_pool_options }),
         TransformPlugin,
-        SpringPlugin::default(),
+        SpringPlugins::default(),
     ));
     assert_eq!(ComputeTaskPool::get().thread_num(), 2);
     // Half-lives from 1 to 10 s: nothing settles in the two seconds run.

@@ -1454,7 +1454,7 @@ macro_rules! for_each_property {
 }
 
 /// A headless app with the chaos' observers and a world of a few entities of each kind.
-fn chaos_app(seed: u64, plugin: SpringPlugin) -> App {
+fn chaos_app(seed: u64, plugin: SpringPlugins) -> App {
     let mut app = app_with(60, plugin);
     app.insert_resource(Chaos {
         random: Random(seed),
@@ -1763,9 +1763,9 @@ fn springs_survive_a_world_that_changes_under_them() {
 fn run_chaos(seed: u64, fixed: bool) {
     const FRAMES: u32 = 1500;
     let plugin = if fixed {
-        SpringPlugin::default().in_schedule(FixedUpdate)
+        SpringPlugins::default().in_schedule(FixedUpdate)
     } else {
-        SpringPlugin::default()
+        SpringPlugins::default()
     };
     let mut app = chaos_app(seed, plugin);
     for _ in 0..FRAMES {

@@ -42,7 +42,7 @@ fn paused_game_time_freezes_game_springs_but_not_real_time_springs() {
 
 #[test]
 fn the_plugin_default_clock_can_be_real_time() {
-    let mut app = app_with(60, SpringPlugin::default().with_clock(SpringClock::Real));
+    let mut app = app_with(60, SpringPlugins::default().with_clock(SpringClock::Real));
     let entity = spawn_translation(&mut app, Spring::gentle(), Vec3::ZERO, Vec3::X * 100.0);
     run(&mut app, 2);
     app.world_mut().resource_mut::<Time<Virtual>>().pause();
@@ -56,7 +56,7 @@ fn the_plugin_default_clock_can_be_real_time() {
 #[test]
 fn fixed_update_steps_follow_the_fixed_clock() {
     let spring = Spring::from_natural_frequency(6.0, 0.4).unwrap();
-    let mut app = app_with(60, SpringPlugin::default().in_schedule(FixedUpdate));
+    let mut app = app_with(60, SpringPlugins::default().in_schedule(FixedUpdate));
     let entity = spawn_translation(&mut app, spring, Vec3::ZERO, Vec3::X * 10.0);
     let mut steps_seen = 0_u128;
     for _ in 0..90 {
@@ -77,7 +77,7 @@ fn fixed_update_steps_follow_the_fixed_clock() {
 
 /// An app whose game clock is paused from the start, every spring on `clock` by default.
 fn paused_app(clock: SpringClock) -> App {
-    let mut app = app_with(60, SpringPlugin::default().with_clock(clock));
+    let mut app = app_with(60, SpringPlugins::default().with_clock(clock));
     app.world_mut().resource_mut::<Time<Virtual>>().pause();
     app
 }

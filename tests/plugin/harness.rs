@@ -11,11 +11,11 @@ use sprung::SpringState;
 /// A headless app with the spring plugin, advancing `1/fps` seconds per update. Like every
 /// Bevy app, its first update has `dt = 0`.
 pub(crate) fn app(fps: u32) -> App {
-    app_with(fps, SpringPlugin::default())
+    app_with(fps, SpringPlugins::default())
 }
 
 /// [`app`] with a configured plugin.
-pub(crate) fn app_with(fps: u32, plugin: SpringPlugin) -> App {
+pub(crate) fn app_with(fps: u32, plugin: SpringPlugins) -> App {
     let mut app = App::new();
     app.add_plugins((MinimalPlugins, TransformPlugin, plugin))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame(fps)));

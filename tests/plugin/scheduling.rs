@@ -290,7 +290,7 @@ fn springs_added_before_the_plugin_move() {
         .world_mut()
         .spawn((Transform::from_translation(base), shake))
         .id();
-    app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugin::default()))
+    app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugins::default()))
         .insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
             crate::harness::frame(60),
         ));

@@ -106,7 +106,7 @@ impl Scene {
 /// The app of `scene`, run for a second so that every system has joined its schedule.
 fn app(scene: Scene) -> App {
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugin::default()))
+    app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugins::default()))
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
             1.0 / 60.0,
         )))

@@ -151,14 +151,14 @@ fn measured_warm_up(app: &mut App, method: Method, vary: bool) {
 const EMPTY_FRAMES: u64 = 100;
 
 /// An app with nothing to spring (`TransformPlugin`, as any app with something to spring has),
-/// with or without [`SpringPlugin`](bevy_sprung::SpringPlugin), or with it and `springs`
+/// with or without [`SpringPlugins`](bevy_sprung::SpringPlugins), or with it and `springs`
 /// translation springs that keep moving, as callgrind runs it.
 fn empty(plugin: bool, springs: usize, frames: u64) {
     use bevy_sprung::prelude::{Spring, TranslationSpring};
     let mut app = App::new();
     app.add_plugins((scenarios::minimal_plugins(), TransformPlugin));
     if plugin {
-        app.add_plugins(bevy_sprung::SpringPlugin::default());
+        app.add_plugins(bevy_sprung::SpringPlugins::default());
     }
     for index in 0..springs {
         #[expect(clippy::cast_precision_loss, reason = "a few entities")]
@@ -292,7 +292,7 @@ fn main() {
         });
     println!(
         "\nwhole frames of an app with TransformPlugin, instructions per frame:\n  \
-         without SpringPlugin {without}; with it and no springs {with} ({:+}); \
+         without SpringPlugins {without}; with it and no springs {with} ({:+}); \
          with one moving translation spring {one} ({:+})",
         i128::from(with) - i128::from(without),
         i128::from(one) - i128::from(without)

@@ -55,7 +55,7 @@ fn app(scene: Scene, reflowing: bool) -> App {
     let mut app = App::new();
     app.add_plugins((
         MinimalPlugins,
-        SpringPlugin::default(),
+        SpringPlugins::default(),
         HierarchyPropagatePlugin::<ComputedUiTargetCamera>::new(PostUpdate),
         HierarchyPropagatePlugin::<ComputedUiRenderTargetInfo>::new(PostUpdate),
     ))

@@ -124,7 +124,7 @@ fn rest(c: &mut Criterion) {
         let mut app = App::new();
         app.add_plugins((scenarios::minimal_plugins(), TransformPlugin));
         if plugin {
-            app.add_plugins(bevy_sprung::SpringPlugin::default());
+            app.add_plugins(bevy_sprung::SpringPlugins::default());
         }
         app.finish();
         app.cleanup();

@@ -83,7 +83,7 @@ fn headless() -> App {
     app.add_plugins((
         task_pools::minimal_plugins(),
         TransformPlugin,
-        SpringPlugin::default(),
+        SpringPlugins::default(),
     ))
     .insert_resource(TimeUpdateStrategy::ManualDuration(
         std::time::Duration::from_secs_f64(1.0 / 60.0),

@@ -491,9 +491,9 @@ pub(crate) fn apply_sequence_presets<P>(
     }
 }
 
-/// The asset types and their loaders (part of [`SpringPlugin`](crate::SpringPlugin) with
+/// The asset types and their loaders (part of [`SpringPlugins`](crate::SpringPlugins) with
 /// feature `asset`). Presets apply to every property's springs; sequences from files need
-/// [`SequenceAssetPlugin<P>`] for their property (the built-in properties have it).
+/// [`SpringSequenceAssetPlugin<P>`] for their property (the built-in properties have it).
 #[derive(Debug, Default, Clone, Copy)]
 pub struct SpringAssetPlugin;
 
@@ -547,15 +547,15 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
 
 /// Sequences from `*.sequence.ron` files for property `P`, whose values must be readable from
 /// RON (`serde`). Adding it twice is harmless.
-pub struct SequenceAssetPlugin<P: SpringProperty>(PhantomData<fn() -> P>);
+pub struct SpringSequenceAssetPlugin<P: SpringProperty>(PhantomData<fn() -> P>);
 
-impl<P: SpringProperty> Default for SequenceAssetPlugin<P> {
+impl<P: SpringProperty> Default for SpringSequenceAssetPlugin<P> {
     fn default() -> Self {
         Self(PhantomData)
     }
 }
 
-impl<P> Plugin for SequenceAssetPlugin<P>
+impl<P> Plugin for SpringSequenceAssetPlugin<P>
 where
     P: SpringProperty,
     ValueOf<P>: DeserializeOwned,
@@ -577,8 +577,8 @@ where
     }
 }
 
-impl<P: SpringProperty> fmt::Debug for SequenceAssetPlugin<P> {
+impl<P: SpringProperty> fmt::Debug for SpringSequenceAssetPlugin<P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "SequenceAssetPlugin<{}>", P::short_type_path())
+        write!(f, "SpringSequenceAssetPlugin<{}>", P::short_type_path())
     }
 }

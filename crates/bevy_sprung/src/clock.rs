@@ -18,7 +18,7 @@ pub enum SpringClock {
 
 /// The clock of every spring that does not choose its own
 /// ([`PropertySpring::with_clock`](crate::spring::PropertySpring::with_clock)). Change it at
-/// any time; [`SpringPlugin::with_clock`](crate::SpringPlugin::with_clock) sets it at startup.
+/// any time; [`SpringPlugins::with_clock`](crate::SpringPlugins::with_clock) sets it at startup.
 ///
 /// # Example
 /// ```
@@ -27,7 +27,7 @@ pub enum SpringClock {
 ///
 /// // A menu-only app: every spring on the real clock, so pausing the game never stops the UI.
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default()));
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default()));
 /// app.insert_resource(DefaultSpringClock(SpringClock::Real));
 /// ```
 #[derive(Resource, Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
@@ -157,7 +157,7 @@ impl FrameSteps {
 }
 
 /// Registers [`SpringClock`] and inserts the [`DefaultSpringClock`] (part of
-/// [`SpringPlugin`](crate::SpringPlugin)).
+/// [`SpringPlugins`](crate::SpringPlugins)).
 #[derive(Debug, Default, Clone, Copy)]
 pub struct SpringClockPlugin {
     /// The default clock to insert if the app has none yet.

@@ -22,15 +22,8 @@ mod sprite {
 
     /// A spring on the colour of a `Sprite`, in Oklab.
     pub type SpriteColorSpring = PropertySpring<SpriteColor>;
-
-    /// The marker of `Sprite::color`, renamed after its component and field.
-    #[deprecated(since = "0.1.0", note = "renamed `SpriteColor`, after `Sprite::color`")]
-    pub type SpriteTint = SpriteColor;
 }
 
-#[cfg(feature = "sprite")]
-#[expect(deprecated, reason = "the old name, kept for a release")]
-pub use sprite::SpriteTint;
 #[cfg(feature = "sprite")]
 pub use sprite::{SpriteColor, SpriteColorSpring};
 
@@ -104,31 +97,9 @@ mod ui {
     pub type TextColorSpring = PropertySpring<TextColor>;
     /// A spring on an `ImageNode`'s tint, in Oklab.
     pub type ImageNodeColorSpring = PropertySpring<ImageNodeColor>;
-
-    /// The marker of `BackgroundColor`, which is now its own property.
-    #[deprecated(since = "0.1.0", note = "use `BackgroundColor` itself as the property")]
-    pub type BackgroundTint = BackgroundColor;
-    /// The marker of `BorderColor`, which is now its own property.
-    #[deprecated(since = "0.1.0", note = "use `BorderColor` itself as the property")]
-    pub type BorderTint = BorderColor;
-    /// The marker of `TextColor`, which is now its own property.
-    #[deprecated(since = "0.1.0", note = "use `TextColor` itself as the property")]
-    pub type TextTint = TextColor;
-    /// The marker of `ImageNode::color`, renamed after its component and field.
-    #[deprecated(
-        since = "0.1.0",
-        note = "renamed `ImageNodeColor`, after `ImageNode::color`"
-    )]
-    pub type ImageTint = ImageNodeColor;
-    /// A spring on an `ImageNode`'s tint, renamed after its marker.
-    #[deprecated(since = "0.1.0", note = "renamed `ImageNodeColorSpring`")]
-    pub type ImageColorSpring = ImageNodeColorSpring;
 }
 
 #[cfg(feature = "ui")]
 pub use ui::{
     BackgroundColorSpring, BorderColorSpring, ImageNodeColor, ImageNodeColorSpring, TextColorSpring,
 };
-#[cfg(feature = "ui")]
-#[expect(deprecated, reason = "the old names, kept for a release")]
-pub use ui::{BackgroundTint, BorderTint, ImageColorSpring, ImageTint, TextTint};

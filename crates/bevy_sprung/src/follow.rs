@@ -100,7 +100,7 @@ impl FixedSamples {
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
@@ -317,13 +317,13 @@ fn aim_followers(mut followers: Query<(&SpringFollow, &Transform, &mut RotationS
     }
 }
 
-/// [`SpringFollow`]: camera smoothing (part of [`SpringPlugin`](crate::SpringPlugin)).
+/// [`SpringFollow`]: camera smoothing (part of [`SpringPlugins`](crate::SpringPlugins)).
 /// Followers are sampled after each fixed step, retargeted before the translation springs step,
 /// and turned toward their target after those and before the rotation springs.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct FollowPlugin;
+pub struct SpringFollowPlugin;
 
-impl Plugin for FollowPlugin {
+impl Plugin for SpringFollowPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<SpringFollow>()
             .register_type::<TargetMotion>()

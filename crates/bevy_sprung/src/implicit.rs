@@ -58,7 +58,7 @@ use crate::spring::{
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 /// #     .add_systems(Startup, spawn_piece)
 /// #     .add_systems(Update, place);
 /// # app.update();

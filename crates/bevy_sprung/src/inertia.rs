@@ -46,7 +46,7 @@ use crate::transform::{Translation, TranslationSpring};
 /// use bevy_sprung::prelude::*;
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default()));
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default()));
 /// app.insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
 ///     std::time::Duration::from_secs_f64(1.0 / 60.0),
 /// ));
@@ -349,12 +349,12 @@ impl Thrown {
     }
 }
 
-/// [`Inertia`] (part of [`SpringPlugin`](crate::SpringPlugin)): its system joins the
+/// [`Inertia`] (part of [`SpringPlugins`](crate::SpringPlugins)): its system joins the
 /// translation springs' input phase with the first `Inertia`.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct InertiaPlugin;
+pub struct SpringInertiaPlugin;
 
-impl Plugin for InertiaPlugin {
+impl Plugin for SpringInertiaPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<Inertia>()
             .register_type::<Snap>()

@@ -30,7 +30,7 @@
 //! use bevy_sprung::prelude::*;
 //!
 //! let mut app = App::new();
-//! app.add_plugins((MinimalPlugins, SpringPlugin::default()));
+//! app.add_plugins((MinimalPlugins, SpringPlugins::default()));
 //! let entity = app
 //!     .world_mut()
 //!     .spawn((Transform::default(), TranslationSpring::new(Spring::snappy(), Vec3::X * 100.0)))
@@ -41,13 +41,13 @@
 //! ```
 //!
 //! # Layout
-//! Each domain is a module with its own plugin, components and systems, and [`SpringPlugin`]
+//! Each domain is a module with its own plugin, components and systems, and [`SpringPlugins`]
 //! adds them all. No two files import each other in a circle. From the bottom up:
 //! - [`space`] (how values spring), [`clock`] (the one source of time,
 //!   [`SpringClockPlugin`](clock::SpringClockPlugin)), [`property`] (what a property is);
 //! - [`spring`], the mechanism every property shares
 //!   ([`SpringSchedulePlugin`](spring::SpringSchedulePlugin),
-//!   [`PropertyStepPlugin`](spring::PropertyStepPlugin), the sets and phases
+//!   [`SpringPropertyStepPlugin`](spring::SpringPropertyStepPlugin), the sets and phases
 //!   ([`PropertySystems`](spring::PropertySystems), [`SpringPhase`](spring::SpringPhase)) and
 //!   the events ([`SpringSettled`](spring::SpringSettled), [`SpringWoke`](spring::SpringWoke)));
 //! - the properties, which define markers and aliases only: [`transform`], [`spin`], `color`,
@@ -60,8 +60,8 @@
 //!   [`reduced_motion`], `interaction` (built on inertia), `asset` and `visibility` (behind
 //!   their features);
 //! - on top, [`SpringPropertyPlugin`], which adds one property with the mechanism and every
-//!   feature's part of it, the plugins of the built-in properties ([`TransformSpringPlugin`],
-//!   `ColorSpringPlugin`, `UiSpringPlugin`), and [`SpringPlugin`].
+//!   feature's part of it, the plugins of the built-in properties ([`SpringTransformPlugin`],
+//!   `SpringColorPlugin`, `SpringUiPlugin`), and [`SpringPlugins`].
 //!
 //! Add the domain plugins alone to spring only what you need.
 //!
@@ -119,12 +119,12 @@ pub mod ui;
 #[cfg(feature = "visibility")]
 pub mod visibility;
 
-pub use plugin::SpringPlugin;
+pub use plugin::SpringPlugins;
 #[cfg(feature = "color")]
-pub use property_plugin::ColorSpringPlugin;
+pub use property_plugin::SpringColorPlugin;
 #[cfg(feature = "ui")]
-pub use property_plugin::UiSpringPlugin;
-pub use property_plugin::{SpringPropertyPlugin, TransformSpringPlugin};
+pub use property_plugin::SpringUiPlugin;
+pub use property_plugin::{SpringPropertyPlugin, SpringTransformPlugin};
 
 /// Guides: long-form documentation.
 pub mod guides {
@@ -179,20 +179,11 @@ pub mod prelude {
         SequenceInterrupted, SpringGroup, SpringGroupSettled, SpringSequence,
     };
     pub use crate::clock::{DefaultSpringClock, SpringClock};
-    #[cfg(feature = "sprite")]
-    #[expect(deprecated, reason = "the old name, kept in the prelude for a release")]
-    pub use crate::color::SpriteTint;
     #[cfg(feature = "ui")]
     pub use crate::color::{
         BackgroundColorSpring, BorderColorSpring, ImageNodeColor, ImageNodeColorSpring,
         TextColorSpring,
     };
-    #[cfg(feature = "ui")]
-    #[expect(
-        deprecated,
-        reason = "the old names, kept in the prelude for a release"
-    )]
-    pub use crate::color::{BackgroundTint, BorderTint, ImageColorSpring, ImageTint, TextTint};
     #[cfg(feature = "sprite")]
     pub use crate::color::{SpriteColor, SpriteColorSpring};
     pub use crate::follow::{SpringFollow, TargetMotion};
@@ -216,8 +207,6 @@ pub mod prelude {
     #[cfg(feature = "ui")]
     pub use crate::space::{Length, Length2};
     pub use crate::space::{Linear, NeverThroughZero, ShortestAngle, ShortestArc};
-    #[expect(deprecated, reason = "the old name, kept in the prelude for a release")]
-    pub use crate::spin::SpinSpring;
     pub use crate::spin::{Spin, SpinAngle, SpinAngleSpring};
     pub use crate::spring::{
         PropertySpring, SkipFrames, SpringAsleep, SpringMotion, SpringSettled, SpringSystems,
@@ -238,14 +227,8 @@ pub mod prelude {
         UiTransformScale, UiTransformScaleSpring, UiTransformTranslation,
         UiTransformTranslationSpring,
     };
-    #[cfg(feature = "ui")]
-    #[expect(
-        deprecated,
-        reason = "the old names, kept in the prelude for a release"
-    )]
-    pub use crate::ui::{UiRotationSpring, UiScaleSpring, UiTranslationSpring};
     #[cfg(feature = "visibility")]
     pub use crate::visibility::CatchUpWhenHidden;
-    pub use crate::{SpringPlugin, SpringPropertyPlugin};
+    pub use crate::{SpringPlugins, SpringPropertyPlugin};
     pub use sprung::{RestThreshold, Spring};
 }

@@ -1,32 +1,41 @@
-//! [`SpringPlugin`]: every domain's plugin, configured in one place.
+//! [`SpringPlugins`]: every domain's plugin, configured in one place.
 
 use bevy::ecs::intern::Interned;
 use bevy::ecs::schedule::ScheduleLabel;
 use bevy::prelude::*;
 
-use crate::choreography::ChoreographyPlugin;
+use bevy::app::PluginGroupBuilder;
+
+use crate::chain::SpringChainPlugin;
+use crate::choreography::SpringChoreographyPlugin;
 use crate::clock::{SpringClock, SpringClockPlugin};
-use crate::follow::FollowPlugin;
-use crate::juice::JuicePlugin;
-use crate::presence::PresencePlugin;
-use crate::property_plugin::TransformSpringPlugin;
-use crate::reduced_motion::ReducedMotionPlugin;
-use crate::spin::SpinPlugin;
+use crate::follow::SpringFollowPlugin;
+use crate::inertia::SpringInertiaPlugin;
+use crate::juice::SpringJuicePlugin;
+use crate::presence::SpringPresencePlugin;
+use crate::property_plugin::SpringTransformPlugin;
+use crate::reduced_motion::SpringReducedMotionPlugin;
+use crate::spin::SpringSpinPlugin;
 use crate::spring::SpringSchedulePlugin;
 
-/// Everything: springs for `Transform`s, whole turns ([`Spin`](crate::spin::Spin)), followers
-/// ([`SpringFollow`](crate::follow::SpringFollow)), and with their features colours, UI geometry
-/// and catch-up for hidden springs. It adds each domain's plugin; add those alone to spring only
-/// part of this, and [`SpringPropertyPlugin`](crate::SpringPropertyPlugin) for a field
-/// of your own.
+/// Everything, as a plugin group (like Bevy's `DefaultPlugins`): springs for `Transform`s, whole
+/// turns ([`Spin`](crate::spin::Spin)), followers, choreography, presence, juice, chains, inertia,
+/// and with their cargo features colours, UI geometry and layout, pointer interaction, assets,
+/// cameras and catch-up for hidden springs. Each domain is one plugin of the group, named
+/// `Spring<Domain>Plugin`; a domain's systems join the frame only once its first component
+/// appears, so what a scene does not use costs nothing a frame, and
+/// `SpringPlugins::default().build().disable::<…>()` leaves a domain out altogether. Add
+/// [`SpringPropertyPlugin`](crate::SpringPropertyPlugin) for a field of your own.
 ///
 /// # Example
 /// ```
 /// use bevy::prelude::*;
+/// use bevy_sprung::chain::SpringChainPlugin;
+/// use bevy_sprung::juice::SpringJuicePlugin;
 /// use bevy_sprung::prelude::*;
 ///
 /// App::new()
-///     .add_plugins((MinimalPlugins, SpringPlugin::default()))
+///     .add_plugins((MinimalPlugins, SpringPlugins::default()))
 ///     .add_systems(Startup, |mut commands: Commands| {
 ///         commands.spawn((
 ///             Transform::default(),
@@ -36,9 +45,14 @@ use crate::spring::SpringSchedulePlugin;
 ///     .update();
 ///
 /// // Deterministic: step in FixedUpdate; or keep UI springing while the game is paused.
-/// let fixed = SpringPlugin::default().in_schedule(FixedUpdate);
-/// let ui = SpringPlugin::default().with_clock(SpringClock::Real);
-/// # let _ = (fixed, ui);
+/// let fixed = SpringPlugins::default().in_schedule(FixedUpdate);
+/// let ui = SpringPlugins::default().with_clock(SpringClock::Real);
+/// // Without chains or juice.
+/// let lean = SpringPlugins::default()
+///     .build()
+///     .disable::<SpringChainPlugin>()
+///     .disable::<SpringJuicePlugin>();
+/// # let _ = (fixed, ui, lean);
 /// ```
 ///
 /// # Using every core
@@ -70,7 +84,7 @@ use crate::spring::SpringSchedulePlugin;
 /// };
 /// App::new()
 ///     // `DefaultPlugins.set(task_pools)` in a game.
-///     .add_plugins((MinimalPlugins.set(task_pools), SpringPlugin::default()))
+///     .add_plugins((MinimalPlugins.set(task_pools), SpringPlugins::default()))
 ///     .update();
 /// ```
 /// On this crate's two-core benchmark machine, moving springs step nearly twice as fast on both
@@ -92,7 +106,7 @@ use crate::spring::SpringSchedulePlugin;
 /// use bevy_sprung::prelude::*;
 ///
 /// App::new()
-///     .add_plugins((MinimalPlugins, TransformPlugin, SpringPlugin::default()))
+///     .add_plugins((MinimalPlugins, TransformPlugin, SpringPlugins::default()))
 ///     .insert_resource(StaticTransformOptimizations::Disabled)
 ///     .update();
 /// ```
@@ -101,7 +115,7 @@ use crate::spring::SpringSchedulePlugin;
 ///
 /// [`StaticTransformOptimizations`]: bevy::transform::StaticTransformOptimizations
 #[derive(Debug, Clone)]
-pub struct SpringPlugin {
+pub struct SpringPlugins {
     /// The schedule the springs step in: `PostUpdate` by default, `FixedUpdate` for
     /// determinism with a fixed-timestep simulation.
     pub schedule: Interned<dyn ScheduleLabel>,
@@ -110,7 +124,7 @@ pub struct SpringPlugin {
     pub clock: SpringClock,
 }
 
-impl Default for SpringPlugin {
+impl Default for SpringPlugins {
     fn default() -> Self {
         Self {
             schedule: PostUpdate.intern(),
@@ -119,15 +133,15 @@ impl Default for SpringPlugin {
     }
 }
 
-impl SpringPlugin {
-    /// The same plugin stepping springs in `schedule`.
+impl SpringPlugins {
+    /// The same plugins stepping springs in `schedule`.
     #[must_use]
     pub fn in_schedule(mut self, schedule: impl ScheduleLabel) -> Self {
         self.schedule = schedule.intern();
         self
     }
 
-    /// The same plugin with `clock` as the default clock.
+    /// The same plugins with `clock` as the default clock.
     #[must_use]
     pub fn with_clock(mut self, clock: SpringClock) -> Self {
         self.clock = clock;
@@ -135,36 +149,36 @@ impl SpringPlugin {
     }
 }
 
-impl Plugin for SpringPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_plugins((
-            SpringClockPlugin {
+impl PluginGroup for SpringPlugins {
+    fn build(self) -> PluginGroupBuilder {
+        let group = PluginGroupBuilder::start::<Self>()
+            .add(SpringClockPlugin {
                 default: self.clock,
-            },
-            SpringSchedulePlugin {
+            })
+            .add(SpringSchedulePlugin {
                 schedule: self.schedule,
-            },
-            TransformSpringPlugin,
-            SpinPlugin,
-            FollowPlugin,
-            ReducedMotionPlugin,
-            ChoreographyPlugin,
-            JuicePlugin,
-            PresencePlugin,
-            crate::chain::SpringChainPlugin,
-            crate::inertia::InertiaPlugin,
-        ));
+            })
+            .add(SpringTransformPlugin)
+            .add(SpringSpinPlugin)
+            .add(SpringFollowPlugin)
+            .add(SpringReducedMotionPlugin)
+            .add(SpringChoreographyPlugin)
+            .add(SpringJuicePlugin)
+            .add(SpringPresencePlugin)
+            .add(SpringChainPlugin)
+            .add(SpringInertiaPlugin);
         #[cfg(feature = "color")]
-        app.add_plugins(crate::property_plugin::ColorSpringPlugin);
+        let group = group.add(crate::property_plugin::SpringColorPlugin);
         #[cfg(feature = "ui")]
-        app.add_plugins(crate::property_plugin::UiSpringPlugin);
+        let group = group.add(crate::property_plugin::SpringUiPlugin);
         #[cfg(feature = "visibility")]
-        app.add_plugins(crate::visibility::CatchUpPlugin);
+        let group = group.add(crate::visibility::SpringCatchUpPlugin);
         #[cfg(feature = "asset")]
-        app.add_plugins(crate::asset::SpringAssetPlugin);
+        let group = group.add(crate::asset::SpringAssetPlugin);
         #[cfg(feature = "picking")]
-        app.add_plugins(crate::interaction::SpringInteractionPlugin);
+        let group = group.add(crate::interaction::SpringInteractionPlugin);
         #[cfg(feature = "camera")]
-        app.add_plugins(crate::camera::CameraRigPlugin);
+        let group = group.add(crate::camera::SpringCameraPlugin);
+        group
     }
 }

@@ -76,7 +76,7 @@ pub type VelocityOf<P> = <<P as SpringProperty>::Space as SpringSpace>::Velocity
 /// );
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default(), SpringPropertyPlugin::<Throttle>::default()));
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default(), SpringPropertyPlugin::<Throttle>::default()));
 /// // 60 fps of game time, whatever the wall clock does.
 /// app.insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
 ///     std::time::Duration::from_secs_f64(1.0 / 60.0),

@@ -6,19 +6,19 @@ use core::marker::PhantomData;
 use bevy::prelude::*;
 
 use crate::property::SpringProperty;
-use crate::spring::{PropertyStepPlugin, is_registered};
+use crate::spring::{SpringPropertyStepPlugin, is_registered};
 
 /// Adds everything for one [`SpringProperty`]: springing a field of your own component takes a
 /// [`spring_property!`](crate::spring_property) and this plugin. It adds the mechanism that
-/// steps the property's springs ([`PropertyStepPlugin<P>`]) and what the features built on
+/// steps the property's springs ([`SpringPropertyStepPlugin<P>`]) and what the features built on
 /// springs need of the property: [`SpringSequence<P>`](crate::choreography::SpringSequence),
 /// groups, and with their cargo features `InteractionTargets<P>` and spring presets. Their
 /// systems join [`SpringUpdate`](crate::spring::SpringUpdate), in
 /// [`PropertySystems<P>`](crate::spring::PropertySystems), when their first component is added
 /// (until then the property costs nothing a frame).
 ///
-/// In an app without [`SpringPlugin`](crate::SpringPlugin) it adds what springs need to step,
-/// with the defaults; add `SpringPlugin` first to configure them. Adding a property twice (say,
+/// In an app without [`SpringPlugins`](crate::SpringPlugins) it adds what springs need to step,
+/// with the defaults; add `SpringPlugins` first to configure them. Adding a property twice (say,
 /// once by a library and once by the app) is harmless.
 ///
 /// # Example
@@ -39,7 +39,7 @@ use crate::spring::{PropertyStepPlugin, is_registered};
 /// let mut app = App::new();
 /// app.add_plugins((
 ///     MinimalPlugins,
-///     SpringPlugin::default(),
+///     SpringPlugins::default(),
 ///     SpringPropertyPlugin::<ShownHealth>::default(),
 /// ));
 /// app.world_mut()
@@ -59,7 +59,7 @@ impl<P: SpringProperty> Plugin for SpringPropertyPlugin<P> {
         if is_registered::<P>(app.world()) {
             return;
         }
-        app.add_plugins(PropertyStepPlugin::<P>::default());
+        app.add_plugins(SpringPropertyStepPlugin::<P>::default());
         crate::choreography::add_property::<P>(app);
         crate::presence::add_property::<P>(app);
         crate::implicit::add_property::<P>(app);
@@ -90,7 +90,7 @@ where
 {
     app.add_plugins((
         SpringPropertyPlugin::<P>::default(),
-        crate::asset::SequenceAssetPlugin::<P>::default(),
+        crate::asset::SpringSequenceAssetPlugin::<P>::default(),
     ));
 }
 
@@ -105,11 +105,11 @@ fn add_built_in<P: SpringProperty>(app: &mut App) {
 /// [`ScaleSpring`](crate::transform::ScaleSpring) and
 /// [`SignedScaleSpring`](crate::transform::SignedScaleSpring), and whole turns
 /// ([`SpinAngleSpring`](crate::spin::SpinAngleSpring)) (part of
-/// [`SpringPlugin`](crate::SpringPlugin)).
+/// [`SpringPlugins`](crate::SpringPlugins)).
 #[derive(Debug, Default, Clone, Copy)]
-pub struct TransformSpringPlugin;
+pub struct SpringTransformPlugin;
 
-impl Plugin for TransformSpringPlugin {
+impl Plugin for SpringTransformPlugin {
     fn build(&self, app: &mut App) {
         use crate::transform::{Rotation, Scale, SignedScale, Translation};
         add_built_in::<Translation>(app);
@@ -121,14 +121,14 @@ impl Plugin for TransformSpringPlugin {
 }
 
 /// Springs the colours of sprites (feature `sprite`) and UI nodes (feature `ui`) in Oklab
-/// (part of [`SpringPlugin`](crate::SpringPlugin)). A `Color` field of your own springs with
+/// (part of [`SpringPlugins`](crate::SpringPlugins)). A `Color` field of your own springs with
 /// [`spring_property!`](crate::spring_property)`(… as OklabColor)`.
 #[cfg(feature = "color")]
 #[derive(Debug, Default, Clone, Copy)]
-pub struct ColorSpringPlugin;
+pub struct SpringColorPlugin;
 
 #[cfg(feature = "color")]
-impl Plugin for ColorSpringPlugin {
+impl Plugin for SpringColorPlugin {
     #[cfg_attr(
         not(any(feature = "sprite", feature = "ui")),
         expect(
@@ -152,19 +152,19 @@ impl Plugin for ColorSpringPlugin {
 
 /// Springs UI geometry: `UiTransform` translation, scale and rotation and `Node` sizes and
 /// offsets, with layout transitions and momentum scrolling
-/// ([`UiLayoutPlugin`](crate::ui::UiLayoutPlugin)) (part of
-/// [`SpringPlugin`](crate::SpringPlugin) with feature `ui`; UI colours are in
-/// [`ColorSpringPlugin`]).
+/// ([`SpringUiLayoutPlugin`](crate::ui::SpringUiLayoutPlugin)) (part of
+/// [`SpringPlugins`](crate::SpringPlugins) with feature `ui`; UI colours are in
+/// [`SpringColorPlugin`]).
 #[cfg(feature = "ui")]
 #[derive(Debug, Default, Clone, Copy)]
-pub struct UiSpringPlugin;
+pub struct SpringUiPlugin;
 
 #[cfg(feature = "ui")]
-impl Plugin for UiSpringPlugin {
+impl Plugin for SpringUiPlugin {
     fn build(&self, app: &mut App) {
         use crate::ui::{
             LayoutScale, LayoutTranslation, NodeBottom, NodeHeight, NodeLeft, NodePosition,
-            NodeRight, NodeSize, NodeTop, NodeWidth, ScrollOffset, UiLayoutPlugin,
+            NodeRight, NodeSize, NodeTop, NodeWidth, ScrollOffset, SpringUiLayoutPlugin,
             UiTransformRotation, UiTransformScale, UiTransformTranslation,
         };
         add_built_in::<UiTransformTranslation>(app);
@@ -183,7 +183,7 @@ impl Plugin for UiSpringPlugin {
             SpringPropertyPlugin::<LayoutTranslation>::default(),
             SpringPropertyPlugin::<LayoutScale>::default(),
             SpringPropertyPlugin::<ScrollOffset>::default(),
-            UiLayoutPlugin,
+            SpringUiLayoutPlugin,
         ));
     }
 }

@@ -10,11 +10,11 @@ use bevy::prelude::*;
 pub use crate::spring::{KeepMotion, ReducedMotion};
 
 /// Registers [`ReducedMotion`] (inserted as `Full` if the app has none) and [`KeepMotion`]
-/// (part of [`SpringPlugin`](crate::SpringPlugin)); the spring systems read them.
+/// (part of [`SpringPlugins`](crate::SpringPlugins)); the spring systems read them.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct ReducedMotionPlugin;
+pub struct SpringReducedMotionPlugin;
 
-impl Plugin for ReducedMotionPlugin {
+impl Plugin for SpringReducedMotionPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<ReducedMotion>()
             .register_type::<ReducedMotion>()

@@ -37,7 +37,7 @@ use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_s
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
@@ -106,10 +106,6 @@ spring_property!(
 /// A spring on [`Spin::angle`]: whole turns, see [`Spin`].
 pub type SpinAngleSpring = PropertySpring<SpinAngle>;
 
-/// A spring on [`SpinAngle`], renamed after its marker.
-#[deprecated(since = "0.1.0", note = "renamed `SpinAngleSpring`")]
-pub type SpinSpring = SpinAngleSpring;
-
 /// Sets `Transform::rotation` from each [`Spin`] that changed, writing only a rotation that
 /// differs.
 fn apply_spin(mut spins: Query<(&Spin, &mut Transform), Changed<Spin>>) {
@@ -134,16 +130,16 @@ fn apply_ui_spin(mut spins: Query<(&Spin, &mut UiTransform), Changed<Spin>>) {
     }
 }
 
-/// [`Spin`]: whole turns (part of [`SpringPlugin`](crate::SpringPlugin), which also adds the
+/// [`Spin`]: whole turns (part of [`SpringPlugins`](crate::SpringPlugins), which also adds the
 /// [`SpinAngle`] property its spring moves, in
-/// [`TransformSpringPlugin`](crate::TransformSpringPlugin)).
+/// [`SpringTransformPlugin`](crate::SpringTransformPlugin)).
 /// A spin sets the rotation right after its spring stepped, in the spin property's
 /// [`SpringPhase::Observe`], so it is ordered with every other property that writes a
 /// `Transform`.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct SpinPlugin;
+pub struct SpringSpinPlugin;
 
-impl Plugin for SpinPlugin {
+impl Plugin for SpringSpinPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<Spin>();
         let springs = [TypeId::of::<PropertySpring<SpinAngle>>()];

@@ -1,7 +1,7 @@
-//! Tracking an entity's motion: where it is this frame ([`WorldPositions`]), and teleports — a
-//! target moved without travelling, told explicitly ([`TargetWarped`]) or caught by a distance,
-//! so that no velocity estimate reads the jump as motion. Below every feature that estimates a
-//! velocity from positions (following, camera rigs, squash & stretch).
+//! Tracking an entity's motion: where it is this frame (`WorldPositions`, internal), and
+//! teleports — a target moved without travelling, told explicitly ([`TargetWarped`]) or caught
+//! by a distance, so that no velocity estimate reads the jump as motion. Below every feature
+//! that estimates a velocity from positions (following, camera rigs, squash & stretch).
 
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
@@ -54,7 +54,7 @@ impl WorldPositions<'_, '_> {
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Update, respawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Update, respawn);
 /// # app.update();
 /// ```
 #[derive(EntityEvent, Debug, Clone, Copy, PartialEq)]

@@ -34,7 +34,7 @@ use crate::spring::{
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Default, Clone, Copy)]
@@ -62,13 +62,13 @@ fn skip_unseen_frames(
     }
 }
 
-/// [`CatchUpWhenHidden`] (part of [`SpringPlugin`](crate::SpringPlugin) with feature
+/// [`CatchUpWhenHidden`] (part of [`SpringPlugins`](crate::SpringPlugins) with feature
 /// `visibility`): keeps its entity's [`SkipFrames`] equal to "not seen" before the springs
 /// step, from the first `CatchUpWhenHidden`.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct CatchUpPlugin;
+pub struct SpringCatchUpPlugin;
 
-impl Plugin for CatchUpPlugin {
+impl Plugin for SpringCatchUpPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<CatchUpWhenHidden>();
         let schedule = spring_schedule(app);

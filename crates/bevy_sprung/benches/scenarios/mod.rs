@@ -215,7 +215,7 @@ impl Method {
             | Self::UiScaleSprings
             | Self::UiTranslationSprings
             | Self::Idle => {
-                app.add_plugins(SpringPlugin::default());
+                app.add_plugins(SpringPlugins::default());
             }
             Self::SpringDamper { .. } => {
                 app.add_plugins(spring_damper::bevy_layer::SpringPlugin);

@@ -4,7 +4,7 @@ use bevy::app::{PluginGroupBuilder, TaskPoolOptions, TaskPoolThreadAssignmentPol
 use bevy::prelude::*;
 
 /// `MinimalPlugins`, with as many compute threads as `SPRUNG_BENCH_COMPUTE_THREADS` says (the
-/// task-pool setting `SpringPlugin`'s docs give), or Bevy's default pools. The pools are made
+/// task-pool setting `SpringPlugins`'s docs give), or Bevy's default pools. The pools are made
 /// once per process: a run measures one setting.
 #[must_use]
 pub(crate) fn minimal_plugins() -> PluginGroupBuilder {

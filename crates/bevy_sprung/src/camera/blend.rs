@@ -46,7 +46,7 @@ use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_s
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq, Eq)]
@@ -391,13 +391,13 @@ pub(super) fn compose_blends(
     }
 }
 
-/// [`VirtualCamera`] and [`CameraBlend`] (part of [`CameraRigPlugin`](super::CameraRigPlugin)):
+/// [`VirtualCamera`] and [`CameraBlend`] (part of [`SpringCameraPlugin`](super::SpringCameraPlugin)):
 /// the blend's springs, after the rigs' (the shots are placed first), and their systems with the
 /// first blend.
 #[derive(Debug, Default, Clone, Copy)]
-pub(super) struct CameraBlendPlugin;
+pub(super) struct SpringCameraBlendPlugin;
 
-impl Plugin for CameraBlendPlugin {
+impl Plugin for SpringCameraBlendPlugin {
     fn build(&self, app: &mut App) {
         app.add_plugins((
             SpringPropertyPlugin::<BlendTranslation>::default(),

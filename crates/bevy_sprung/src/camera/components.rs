@@ -55,7 +55,7 @@ use crate::spring::{PropertySpring, SpringTargetMut};
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, PartialEq)]
@@ -208,7 +208,7 @@ impl CameraRig {
 /// }
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 ///     .add_systems(SpringUpdate, aim_between.in_set(CameraRigSystems::Goal));
 /// app.world_mut().spawn((Player, Transform::default()));
 /// app.world_mut().spawn(CameraRig::new(Spring::smooth()));

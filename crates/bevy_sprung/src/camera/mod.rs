@@ -57,13 +57,13 @@ pub enum CameraRigSystems {
     Compose,
 }
 
-/// [`CameraRig`] and its parts (part of [`SpringPlugin`](crate::SpringPlugin) with feature
+/// [`CameraRig`] and its parts (part of [`SpringPlugins`](crate::SpringPlugins) with feature
 /// `camera`). The rig's systems join the spring schedule with the first rig: goals and the
 /// springs they retarget before the rig's springs step, the camera placed after.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct CameraRigPlugin;
+pub struct SpringCameraPlugin;
 
-impl Plugin for CameraRigPlugin {
+impl Plugin for SpringCameraPlugin {
     fn build(&self, app: &mut App) {
         // In this order: the look-ahead, zoom and orbit step before the centre is framed.
         app.add_plugins((
@@ -73,7 +73,7 @@ impl Plugin for CameraRigPlugin {
         ));
         // The clearance steps before the camera is placed, from the last frame's pull.
         #[cfg(feature = "camera_occlusion")]
-        app.add_plugins(occlusion::CameraOcclusionPlugin);
+        app.add_plugins(occlusion::SpringCameraOcclusionPlugin);
         app.add_plugins((
             SpringPropertyPlugin::<RigHorizontal>::default(),
             SpringPropertyPlugin::<RigVertical>::default(),
@@ -119,7 +119,7 @@ impl Plugin for CameraRigPlugin {
             );
         });
         // Blends come after the shots (rigs) are placed.
-        app.add_plugins(blend::CameraBlendPlugin);
+        app.add_plugins(blend::SpringCameraBlendPlugin);
         let springs = [TypeId::of::<PropertySpring<RigHorizontal>>()];
         add_property_systems(app, &springs, |schedule| {
             // The rig's properties run in the order the plugin added them: look-ahead, zoom,

@@ -42,7 +42,7 @@ use crate::spring::{PropertySpring, SpringTargetMut, add_systems_on_first_use};
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, AssetPlugin::default(), SpringPlugin::default())).init_asset::<Mesh>().add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, AssetPlugin::default(), SpringPlugins::default())).init_asset::<Mesh>().add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
@@ -174,12 +174,12 @@ pub(super) fn place_pulled_cameras(
     }
 }
 
-/// [`CameraOcclusion`] (part of [`CameraRigPlugin`](super::CameraRigPlugin) with feature
+/// [`CameraOcclusion`] (part of [`SpringCameraPlugin`](super::SpringCameraPlugin) with feature
 /// `camera_occlusion`): the clearance spring, and the ray cast after transform propagation.
 #[derive(Debug, Default, Clone, Copy)]
-pub(super) struct CameraOcclusionPlugin;
+pub(super) struct SpringCameraOcclusionPlugin;
 
-impl Plugin for CameraOcclusionPlugin {
+impl Plugin for SpringCameraOcclusionPlugin {
     fn build(&self, app: &mut App) {
         app.add_plugins(SpringPropertyPlugin::<RigClearance>::default())
             .register_type::<CameraOcclusion>();

@@ -95,7 +95,7 @@ use crate::spring::{add_systems_on_first_use, first_use};
 ///     });
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugin::default())).add_systems(Startup, spawn_tail);
+/// # app.add_plugins((MinimalPlugins, TransformPlugin, SpringPlugins::default())).add_systems(Startup, spawn_tail);
 /// # app.update();
 /// # app.update();
 /// ```
@@ -279,7 +279,7 @@ fn watch_hierarchy(world: &mut World) {
 #[derive(SystemSet, Debug, Clone, PartialEq, Eq, Hash)]
 pub struct ChainSystems;
 
-/// [`SpringChain`]s (part of [`SpringPlugin`](crate::SpringPlugin)): their systems join with
+/// [`SpringChain`]s (part of [`SpringPlugins`](crate::SpringPlugins)): their systems join with
 /// the first chain.
 #[derive(Debug, Default, Clone, Copy)]
 pub struct SpringChainPlugin;

@@ -43,7 +43,7 @@ use crate::spring::{SpringWoke, trigger_if_alive};
 ///     });
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, open_menu);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, open_menu);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Default, Clone, PartialEq, Eq, Hash)]

@@ -28,13 +28,13 @@ use crate::spring::{
 };
 
 /// Group completion ([`SpringGroup`]) and the choreography types (part of
-/// [`SpringPlugin`](crate::SpringPlugin)). The per-property systems that drive
+/// [`SpringPlugins`](crate::SpringPlugins)). The per-property systems that drive
 /// [`SpringSequence`]s come with each property's
 /// [`SpringPropertyPlugin`](crate::SpringPropertyPlugin).
 #[derive(Debug, Default, Clone, Copy)]
-pub struct ChoreographyPlugin;
+pub struct SpringChoreographyPlugin;
 
-impl Plugin for ChoreographyPlugin {
+impl Plugin for SpringChoreographyPlugin {
     fn build(&self, app: &mut App) {
         let schedule = spring_schedule(app);
         app.init_resource::<group::SettleTracker>()

@@ -148,7 +148,7 @@ pub enum SequencePhase {
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, (spawn_menu, pulse));
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, (spawn_menu, pulse));
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]

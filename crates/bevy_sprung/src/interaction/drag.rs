@@ -74,7 +74,7 @@ pub enum DragFollow {
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn_card);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn_card);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]
@@ -653,6 +653,13 @@ fn end_drag(
         let (projected, mut target, snapped) = drag.release_target(position, velocity, active.home);
         // A world drag moves in the plane facing the camera: the entity keeps its depth (in
         // 2D, its z, the draw order) whatever the snap point's.
+        #[cfg_attr(
+            not(feature = "ui"),
+            expect(
+                irrefutable_let_patterns,
+                reason = "without `ui` every drag is a world drag"
+            )
+        )]
         if let DragSpace::World { normal, .. } = active.space {
             target -= normal * (target - position).dot(normal);
         }

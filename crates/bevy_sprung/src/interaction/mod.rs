@@ -62,7 +62,7 @@ use crate::spring::{
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn_button);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn_button);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]
@@ -227,7 +227,7 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     });
 }
 
-/// [`InteractionState`] and [`SpringDrag`] (part of [`SpringPlugin`](crate::SpringPlugin) with
+/// [`InteractionState`] and [`SpringDrag`] (part of [`SpringPlugins`](crate::SpringPlugins) with
 /// the `picking` feature; the app adds Bevy's picking plugins and a backend). The per-property
 /// systems of [`InteractionTargets`] come with each property's
 /// [`SpringPropertyPlugin`](crate::SpringPropertyPlugin).

@@ -26,14 +26,14 @@ use bevy::app::AnimationSystems;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 
-/// [`Shake`] and [`SquashStretch`] (part of [`SpringPlugin`](crate::SpringPlugin)): a shake
+/// [`Shake`] and [`SquashStretch`] (part of [`SpringPlugins`](crate::SpringPlugins)): a shake
 /// is added in `PostUpdate` after the springs (`AnimationSystems`) and before transform
 /// propagation, in [`JuiceSystems`], and taken off again in `PreUpdate`, before gameplay reads
 /// or writes the `Transform`; a squash writes its layer of the scale after the springs.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct JuicePlugin;
+pub struct SpringJuicePlugin;
 
-impl Plugin for JuicePlugin {
+impl Plugin for SpringJuicePlugin {
     fn build(&self, app: &mut App) {
         app.configure_sets(
             PostUpdate,

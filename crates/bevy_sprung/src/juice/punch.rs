@@ -31,7 +31,7 @@ impl<P: SpringProperty> PropertySpring<P> {
     ///     }
     /// }
     /// # let mut app = App::new();
-    /// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Update, pop);
+    /// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Update, pop);
     /// # app.world_mut().spawn((Transform::default(), ScaleSpring::new(Spring::bouncy(), Vec3::ONE)));
     /// # app.update();
     /// ```

@@ -66,7 +66,7 @@ const MAX_SAMPLES_PER_FRAME: u64 = 64;
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn).add_systems(Update, on_explosion);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn).add_systems(Update, on_explosion);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]

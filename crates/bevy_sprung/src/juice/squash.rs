@@ -64,7 +64,7 @@ pub enum Conserve {
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone)]

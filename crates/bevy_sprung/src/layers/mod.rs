@@ -95,7 +95,7 @@ pub type LayerSpring<P, L> = PropertySpring<Layer<P, L>>;
 /// struct Hover;
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 ///     .add_plugins(SpringLayerPlugin::<Translation, Hover>::default());
 /// app.insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
 ///     std::time::Duration::from_secs_f64(1.0 / 60.0),

@@ -67,7 +67,7 @@ use crate::spring::{PropertySpring, SpringTargetMut, trigger_if_alive};
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 /// #     .add_systems(Startup, spawn_coin)
 /// #     .add_systems(Update, collect);
 /// # app.update();
@@ -136,7 +136,7 @@ pub enum PresencePhase {
 ///     ));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn_card);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn_card);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]

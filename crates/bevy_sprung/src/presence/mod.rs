@@ -26,14 +26,14 @@ use bevy::prelude::*;
 use crate::property::SpringProperty;
 use crate::spring::{SpringSystems, add_systems_on_first_use, spring_schedule};
 
-/// Presence (part of [`SpringPlugin`](crate::SpringPlugin)): entities with [`Presence`] report
+/// Presence (part of [`SpringPlugins`](crate::SpringPlugins)): entities with [`Presence`] report
 /// when they have entered and leave once their exit has settled; the children of a
 /// [`StaggerChildren`] wait their turn (its systems join the springs' schedule with the first
 /// one, before the springs step).
 #[derive(Debug, Default, Clone, Copy)]
-pub struct PresencePlugin;
+pub struct SpringPresencePlugin;
 
-impl Plugin for PresencePlugin {
+impl Plugin for SpringPresencePlugin {
     fn build(&self, app: &mut App) {
         let schedule = spring_schedule(app);
         app.register_type::<Presence>()

@@ -39,7 +39,7 @@ use crate::clock::SpringTime;
 ///         });
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, deal_cards);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, deal_cards);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]

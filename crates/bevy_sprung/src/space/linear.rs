@@ -25,7 +25,7 @@ use super::vector::SpringVector;
 /// );
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default(), SpringPropertyPlugin::<VolumeLevel>::default()));
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default(), SpringPropertyPlugin::<VolumeLevel>::default()));
 /// app.world_mut().spawn((Volume(0.0), PropertySpring::<VolumeLevel>::new(Spring::smooth(), 1.0)));
 /// ```
 pub struct Linear<V>(PhantomData<fn() -> V>);

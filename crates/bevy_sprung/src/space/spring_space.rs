@@ -173,7 +173,7 @@ pub trait SpringSpace: Send + Sync + 'static {
 
     /// Keeps a step's result in range: `before` is the offset at the start of the step toward
     /// `target`, `after` the offset and `velocity` the velocity at its end. The default changes
-    /// nothing; [`NeverThroughZero`] stops a value at zero.
+    /// nothing; [`NeverThroughZero`](super::NeverThroughZero) stops a value at zero.
     ///
     /// For a finite `after` and `velocity` it must return finite ones for which
     /// [`at_carried`](Self::at_carried) gives a valid value: the plugin's usual step bounds
@@ -227,7 +227,8 @@ pub trait SpringSpace: Send + Sync + 'static {
     /// [`constrain`](Self::constrain) in the plugin's usual step, which may leave the step to
     /// the general one (`None`, the state untouched) where constraining it is the uncommon
     /// case: the per-spring loop then holds no code for it. By default `constrain`'s result;
-    /// [`NeverThroughZero`] leaves a step that may cross zero to the general step.
+    /// [`NeverThroughZero`](super::NeverThroughZero) leaves a step that may cross zero to the
+    /// general step.
     #[doc(hidden)]
     #[inline]
     #[must_use]
@@ -241,10 +242,10 @@ pub trait SpringSpace: Send + Sync + 'static {
     }
 
     /// Whether [`constrain_usual`](Self::constrain_usual) may leave a step to the general one
-    /// (`false` by default; [`NeverThroughZero`] may). The usual step then tests whether
-    /// something else wrote the value together with the constraint, after the step, in one
-    /// branch for both; otherwise it tests it before the step, where the test waits on
-    /// nothing.
+    /// (`false` by default; [`NeverThroughZero`](super::NeverThroughZero) may). The usual step
+    /// then tests whether something else wrote the value together with the constraint, after
+    /// the step, in one branch for both; otherwise it tests it before the step, where the test
+    /// waits on nothing.
     #[doc(hidden)]
     const CONSTRAINS_USUAL_STEP: bool = false;
 }

@@ -81,7 +81,7 @@ use crate::space::{Carried, SpringSpace, SpringVector};
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn).add_systems(Update, retarget);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn).add_systems(Update, retarget);
 /// # app.update();
 /// ```
 #[derive(Component, Reflect)]
@@ -228,7 +228,7 @@ impl<P: SpringProperty> fmt::Debug for VelocityChange<P> {
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Update, speeds);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Update, speeds);
 /// # app.world_mut().spawn((Transform::default(), TranslationSpring::new(Spring::bouncy(), Vec3::X)));
 /// # app.update();
 /// ```
@@ -729,7 +729,7 @@ fn finite_velocity<V: SpringVector>(velocity: V, what: &str) -> Result<V, Spring
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Update, grow_selected);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Update, grow_selected);
 /// # app.world_mut().spawn((Transform::default(), Selected(true), ScaleSpring::new(Spring::bouncy(), Vec3::ONE)));
 /// # app.update();
 /// ```

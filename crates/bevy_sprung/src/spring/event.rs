@@ -59,7 +59,7 @@ pub(crate) use property_event;
 ///         });
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(EntityEvent)]
@@ -84,7 +84,7 @@ pub struct SpringSettled<P: SpringProperty> {
 ///         .observe(|woke: On<SpringWoke<Translation>>| info!("{} moves again", woke.entity));
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(Startup, spawn);
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Startup, spawn);
 /// # app.update();
 /// ```
 #[derive(EntityEvent)]

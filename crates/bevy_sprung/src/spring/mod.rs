@@ -23,7 +23,7 @@ pub use component::{
     PropertySpring, SpringAsleep, SpringInputError, SpringMotion, SpringTargetMut,
 };
 pub use event::{SpringSettled, SpringWoke};
-pub use plugin::{PropertyStepPlugin, SpringSchedulePlugin};
+pub use plugin::{SpringPropertyStepPlugin, SpringSchedulePlugin};
 pub use preference::{KeepMotion, ReducedMotion};
 pub use schedule::{PropertySystems, SpringPhase, SpringSystems, SpringUpdate};
 pub use skip::SkipFrames;

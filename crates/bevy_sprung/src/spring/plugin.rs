@@ -25,7 +25,7 @@ use crate::clock::SpringClockPlugin;
 use crate::property::SpringProperty;
 
 /// Puts [`SpringSystems`] into the schedule the springs step in (part of
-/// [`SpringPlugin`](crate::SpringPlugin)): in `PostUpdate`, inside [`AnimationSystems`] and
+/// [`SpringPlugins`](crate::SpringPlugins)): in `PostUpdate`, inside [`AnimationSystems`] and
 /// before transform propagation; in any other schedule, as a plain set. The set holds the
 /// system that runs [`SpringUpdate`].
 #[derive(Debug, Clone)]
@@ -48,7 +48,7 @@ impl Plugin for SpringSchedulePlugin {
         if let Some(existing) = app.world().get_resource::<SpringSchedule>() {
             if existing.label != self.schedule {
                 warn!(
-                    "bevy_sprung: springs already step in {:?}; add SpringPlugin before any \
+                    "bevy_sprung: springs already step in {:?}; add SpringPlugins before any \
                      spring property plugin to step them in {:?}",
                     existing.label, self.schedule
                 );
@@ -114,7 +114,7 @@ fn run_spring_update(world: &mut World) {
     world.run_schedule(SpringUpdate);
 }
 
-/// The schedule the springs step in. An app without [`SpringPlugin`](crate::SpringPlugin) gets
+/// The schedule the springs step in. An app without [`SpringPlugins`](crate::SpringPlugins) gets
 /// what springs need to step (the schedule and the clock, with their defaults): every plugin
 /// that adds springing systems starts with this.
 pub(crate) fn spring_schedule(app: &mut App) -> Interned<dyn ScheduleLabel> {
@@ -127,7 +127,7 @@ pub(crate) fn spring_schedule(app: &mut App) -> Interned<dyn ScheduleLabel> {
     app.world().resource::<SpringSchedule>().label
 }
 
-/// Whether property `P` has been added (by a [`PropertyStepPlugin<P>`]).
+/// Whether property `P` has been added (by a [`SpringPropertyStepPlugin<P>`]).
 pub(crate) fn is_registered<P: SpringProperty>(world: &World) -> bool {
     world
         .get_resource::<SpringSchedule>()
@@ -140,15 +140,15 @@ pub(crate) fn is_registered<P: SpringProperty>(world: &World) -> bool {
 /// property added before it. [`SpringPropertyPlugin`](crate::SpringPropertyPlugin) adds this
 /// and what the features built on springs (sequences, pointer states, presets, groups) need of
 /// the property: add that one for a property of your own.
-pub struct PropertyStepPlugin<P: SpringProperty>(PhantomData<fn() -> P>);
+pub struct SpringPropertyStepPlugin<P: SpringProperty>(PhantomData<fn() -> P>);
 
-impl<P: SpringProperty> Default for PropertyStepPlugin<P> {
+impl<P: SpringProperty> Default for SpringPropertyStepPlugin<P> {
     fn default() -> Self {
         Self(PhantomData)
     }
 }
 
-impl<P: SpringProperty> Plugin for PropertyStepPlugin<P> {
+impl<P: SpringProperty> Plugin for SpringPropertyStepPlugin<P> {
     fn build(&self, app: &mut App) {
         spring_schedule(app);
         let mut bookkeeping = app.world_mut().resource_mut::<SpringSchedule>();
@@ -201,9 +201,9 @@ impl<P: SpringProperty> Plugin for PropertyStepPlugin<P> {
     }
 }
 
-impl<P: SpringProperty> core::fmt::Debug for PropertyStepPlugin<P> {
+impl<P: SpringProperty> core::fmt::Debug for SpringPropertyStepPlugin<P> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(f, "PropertyStepPlugin<{}>", P::short_type_path())
+        write!(f, "SpringPropertyStepPlugin<{}>", P::short_type_path())
     }
 }
 

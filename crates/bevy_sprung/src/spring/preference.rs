@@ -25,7 +25,7 @@ use sprung::Spring;
 /// use bevy_sprung::prelude::*;
 ///
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()));
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default()));
 /// // From the app's settings menu, or the platform's accessibility setting:
 /// let user_prefers_reduced_motion = true;
 /// if user_prefers_reduced_motion {

@@ -21,7 +21,7 @@ pub struct SpringSystems;
 
 /// The schedule of the spring systems, run from [`SpringSystems`] once per run of the schedule
 /// the springs step in (`PostUpdate`, or the one
-/// [`SpringPlugin::in_schedule`](crate::SpringPlugin::in_schedule) names).
+/// [`SpringPlugins::in_schedule`](crate::SpringPlugins::in_schedule) names).
 ///
 /// What a scene does not spring costs nothing: the systems of a property join this schedule
 /// when the first spring on that property is added, and the system that runs the schedule joins
@@ -52,7 +52,7 @@ pub struct SpringSystems;
 /// }
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default())).add_systems(
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(
 ///     SpringUpdate,
 ///     aim.after(PropertySystems::<Translation>::default())
 ///         .before(PropertySystems::<Rotation>::default()),
@@ -98,7 +98,7 @@ pub struct SpringUpdate;
 /// }
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 ///     .insert_resource(Growing(true))
 ///     .add_systems(SpringUpdate, grow.in_set(PropertySystems::<Scale>::phase(SpringPhase::Input)));
 /// app.update();

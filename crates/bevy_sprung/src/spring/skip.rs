@@ -18,7 +18,7 @@ use bevy::prelude::*;
 /// use bevy_sprung::spring::SkipFrames;
 ///
 /// let mut app = App::new();
-/// app.add_plugins((MinimalPlugins, SpringPlugin::default()));
+/// app.add_plugins((MinimalPlugins, SpringPlugins::default()));
 /// let panel = app
 ///     .world_mut()
 ///     .spawn((

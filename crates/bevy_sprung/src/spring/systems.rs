@@ -69,7 +69,7 @@ type Skipping<'w, 's, P> = Query<
 /// This system runs in [`SpringUpdate`](crate::spring::SpringUpdate), which an exclusive system
 /// runs on the thread that runs the schedule around it: the compute pool's threads are free,
 /// and with the calling thread they use every core Bevy gives the pool, plus one (on a machine
-/// with two cores, both). See [`SpringPlugin`](crate::SpringPlugin) for the task-pool setting
+/// with two cores, both). See [`SpringPlugins`](crate::SpringPlugins) for the task-pool setting
 /// that uses every core on larger machines.
 pub(crate) fn step_springs<P: SpringProperty>(
     settings: StepSettings,

@@ -71,7 +71,7 @@ use crate::spring::PropertySpring;
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 /// #     .add_systems(Startup, spawn_list)
 /// #     .add_systems(Update, last_to_top);
 /// # app.update();
@@ -457,7 +457,7 @@ pub(super) fn draw_offsets(
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 /// #     .add_systems(Startup, spawn_row)
 /// #     .add_systems(Update, remove);
 /// # app.update();

@@ -13,7 +13,7 @@ pub use layout::{
     LayoutOffset, LayoutScale, LayoutScaleSpring, LayoutSpring, LayoutTranslation,
     LayoutTranslationSpring, PopLayout,
 };
-pub use scroll::{MomentumScroll, ScrollMotion, ScrollOffset, ScrollSettled, ScrollSpring};
+pub use scroll::{MomentumScroll, ScrollMotion, ScrollOffset, ScrollOffsetSpring, ScrollSettled};
 
 use core::any::TypeId;
 
@@ -110,23 +110,13 @@ pub type NodeRightSpring = PropertySpring<NodeRight>;
 /// A spring on [`NodeBottom`].
 pub type NodeBottomSpring = PropertySpring<NodeBottom>;
 
-/// A spring on [`UiTransformTranslation`], renamed after its marker.
-#[deprecated(since = "0.1.0", note = "renamed `UiTransformTranslationSpring`")]
-pub type UiTranslationSpring = UiTransformTranslationSpring;
-/// A spring on [`UiTransformScale`], renamed after its marker.
-#[deprecated(since = "0.1.0", note = "renamed `UiTransformScaleSpring`")]
-pub type UiScaleSpring = UiTransformScaleSpring;
-/// A spring on [`UiTransformRotation`], renamed after its marker.
-#[deprecated(since = "0.1.0", note = "renamed `UiTransformRotationSpring`")]
-pub type UiRotationSpring = UiTransformRotationSpring;
-
 /// Layout transitions ([`LayoutSpring`], [`PopLayout`]) and momentum scrolling
 /// ([`MomentumScroll`]): their systems join the frame with their first component. Part of
-/// [`UiSpringPlugin`](crate::UiSpringPlugin), which also adds the properties they move.
+/// [`SpringUiPlugin`](crate::SpringUiPlugin), which also adds the properties they move.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct UiLayoutPlugin;
+pub struct SpringUiLayoutPlugin;
 
-impl Plugin for UiLayoutPlugin {
+impl Plugin for SpringUiLayoutPlugin {
     fn build(&self, app: &mut App) {
         app.register_type::<LayoutSpring>()
             .register_type::<PopLayout>()

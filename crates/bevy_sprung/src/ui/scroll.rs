@@ -56,7 +56,7 @@ use crate::spring::{PropertySpring, SpringSettled, trigger_if_alive};
 ///     }
 /// }
 /// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugin::default()))
+/// # app.add_plugins((MinimalPlugins, SpringPlugins::default()))
 /// #     .init_resource::<ButtonInput<KeyCode>>()
 /// #     .add_systems(Startup, spawn_list)
 /// #     .add_systems(Update, fling);
@@ -67,7 +67,7 @@ use crate::spring::{PropertySpring, SpringSettled, trigger_if_alive};
     ScrollPosition,
     ScrollMotion,
     ScrollExtent,
-    ScrollSpring = PropertySpring::new(Spring::smooth(), Vec2::ZERO)
+    ScrollOffsetSpring = PropertySpring::new(Spring::smooth(), Vec2::ZERO)
 )]
 #[cfg_attr(feature = "picking", require(pointer::DragPath))]
 #[component(on_add = crate::spring::first_use::<MomentumScroll>)]
@@ -234,7 +234,7 @@ spring_property!(
 );
 
 /// The spring of a [`MomentumScroll`].
-pub type ScrollSpring = PropertySpring<ScrollOffset>;
+pub type ScrollOffsetSpring = PropertySpring<ScrollOffset>;
 
 /// Triggered on a [`MomentumScroll`] area when it has come to rest.
 #[derive(EntityEvent, Debug, Clone, Copy, PartialEq, Eq)]
@@ -274,7 +274,7 @@ pub(super) fn steer_scrolls(
     mut areas: Query<(
         &mut MomentumScroll,
         &mut ScrollExtent,
-        &mut ScrollSpring,
+        &mut ScrollOffsetSpring,
         &mut ScrollMotion,
         &ComputedNode,
     )>,
