@@ -1,10 +1,13 @@
 //! Juice: punch, shake (deterministic, frame-rate independent, on top of a follower) and squash
 //! & stretch (volume kept).
 
+use core::time::Duration;
+
 use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
 
-use crate::harness::{app, run};
+use crate::harness::{app, frame, run};
 
 /// A punch swings the spring out by the distance asked for, for every preset, and it returns.
 #[test]
@@ -232,17 +235,23 @@ fn squash_and_stretch_keep_volume() {
     }
 }
 
-/// A body moved by gameplay (no translation spring) at a steady 300 units/s along x, child of
-/// a parent that also moves, carried 1e5 units in one frame (a respawn): told with
+/// A squashed body without a translation spring, walking at 300 units/s in the world as the
+/// child of a parent that also moves, carried far in one frame (a respawn): told with
 /// `TargetWarped`, or caught by the teleport distance, the jump does not read as speed and the
-/// stretch stays where the steady motion holds it. Untold and uncaught, the jump is a frame at
-/// the stretch limit and the body visibly widens: what every case did before the fix.
+/// stretch stays within what the steady walk already showed. Untold and uncaught, the jump is a
+/// frame at the stretch limit and the body widens, by more than twice the bound: what every case
+/// did before the fix.
+/// At 30 to 360 fps, in a world 1e5 units from its origin, and with the jump in a 1 s hitch.
 #[test]
 fn a_teleport_does_not_stretch_a_squashed_body() {
     #[derive(Component)]
     struct Mover;
     #[derive(Resource, Default)]
-    struct Jump(bool, bool);
+    struct Jump {
+        now: bool,
+        told: bool,
+        delta: Vec3,
+    }
     fn walk(
         time: Res<Time>,
         mut movers: Query<(Entity, &mut Transform, Has<SquashStretch>), With<Mover>>,
@@ -251,24 +260,67 @@ fn a_teleport_does_not_stretch_a_squashed_body() {
     ) {
         for (entity, mut transform, squashed) in &mut movers {
             transform.translation.x += 150.0 * time.delta_secs();
-            if squashed && core::mem::take(&mut jump.0) {
-                let delta = Vec3::new(1e5, 0.0, 0.0);
-                transform.translation += delta;
-                if jump.1 {
-                    commands.trigger(TargetWarped { entity, delta });
+            if squashed && core::mem::take(&mut jump.now) {
+                transform.translation += jump.delta;
+                if jump.told {
+                    commands.trigger(TargetWarped {
+                        entity,
+                        delta: jump.delta,
+                    });
                 }
             }
         }
     }
-    for fps in [30, 60, 144] {
+    struct Case {
+        fps: u32,
+        origin: f32,
+        jump: f32,
+        hitch: bool,
+    }
+    let cases = [30, 60, 144, 360]
+        .map(|fps| Case {
+            fps,
+            origin: 0.0,
+            jump: 1e5,
+            hitch: false,
+        })
+        .into_iter()
+        .chain([
+            // A big world: f32 positions are 1/128 apart here.
+            Case {
+                fps: 60,
+                origin: 1e5,
+                jump: 1e5,
+                hitch: false,
+            },
+            Case {
+                fps: 60,
+                origin: 0.0,
+                jump: 1e5,
+                hitch: true,
+            },
+        ]);
+    for Case {
+        fps,
+        origin,
+        jump,
+        hitch,
+    } in cases
+    {
         for (told, distance) in [
             (true, f32::INFINITY),
             (false, 1000.0),
             (false, f32::INFINITY),
         ] {
+            let case = format!(
+                "{fps} fps, origin {origin}, hitch {hitch}, told {told}, distance {distance}"
+            );
             let mut app = app(fps);
             app.init_resource::<Jump>().add_systems(Update, walk);
-            let parent = app.world_mut().spawn((Transform::default(), Mover)).id();
+            let parent = app
+                .world_mut()
+                .spawn((Transform::from_xyz(origin, 0.0, 0.0), Mover))
+                .id();
             let body = app
                 .world_mut()
                 .spawn((
@@ -278,28 +330,104 @@ fn a_teleport_does_not_stretch_a_squashed_body() {
                     ChildOf(parent),
                 ))
                 .id();
+            let scale = |app: &App| app.world().get::<Transform>(body).unwrap().scale.x;
             run(&mut app, 2 * fps);
-            let steady = app.world().get::<Transform>(body).unwrap().scale.x;
             // 300 units/s in the world: 1.3× along x, reached and held.
-            assert!((steady - 1.3).abs() < 1e-3, "{fps} fps: {steady}");
-            app.world_mut().resource_mut::<Jump>().0 = true;
-            app.world_mut().resource_mut::<Jump>().1 = told;
-            let mut widest = steady;
+            let mut steady = scale(&app);
             for _ in 0..fps {
                 app.update();
-                widest = widest.max(app.world().get::<Transform>(body).unwrap().scale.x);
+                steady = steady.max(scale(&app));
+            }
+            assert!((steady - 1.3).abs() < 1e-3, "{case}: {steady}");
+            *app.world_mut().resource_mut::<Jump>() = Jump {
+                now: true,
+                told,
+                delta: Vec3::new(jump, 0.0, 0.0),
+            };
+            let mut widest = steady;
+            for i in 0..fps {
+                // The jump's frame lasts a second.
+                let length = if hitch && i == 0 {
+                    Duration::from_secs(1)
+                } else {
+                    frame(fps)
+                };
+                app.insert_resource(TimeUpdateStrategy::ManualDuration(length));
+                app.update();
+                widest = widest.max(scale(&app));
             }
             if told || distance.is_finite() {
-                assert!(
-                    widest - steady < 1e-3,
-                    "{fps} fps, told {told}, distance {distance}: stretched to {widest}"
-                );
+                assert!(widest - steady < 1e-3, "{case}: stretched to {widest}");
             } else {
+                // The control: the bound above tells the cases apart (at 360 fps the deformation
+                // has the least time to answer the one-frame spike).
                 assert!(
-                    widest - steady > 5e-3,
-                    "{fps} fps: the untold jump reads as speed: {widest}"
+                    widest - steady > 2e-3,
+                    "{case}: the untold jump reads as speed: {widest}"
                 );
             }
+        }
+    }
+}
+
+/// A squashed body handed from its translation spring back to its own position, with the
+/// spring removed at rest or mid-flight: the estimate picks up where the spring left the body,
+/// so neither the distance the spring carried it nor a teleport told while the spring moved it
+/// reads as speed, and the frozen motion of the removed spring is not read at all: the body,
+/// now still, relaxes to its own shape.
+#[test]
+fn a_squash_hands_over_from_a_removed_spring_without_a_jump() {
+    for fps in [30, 60, 144, 360] {
+        for in_flight in [false, true] {
+            let mut app = app(fps);
+            let body = app
+                .world_mut()
+                .spawn((Transform::default(), SquashStretch::new(0.001, 1.5)))
+                .id();
+            let shape = |app: &App| {
+                let scale = app.world().get::<Transform>(body).unwrap().scale;
+                (scale - Vec3::ONE).abs().max_element()
+            };
+            // Still and spring-less: the estimate knows the body at the origin.
+            run(&mut app, fps / 2);
+            app.world_mut()
+                .entity_mut(body)
+                .insert(TranslationSpring::new(
+                    Spring::snappy(),
+                    Vec3::new(500.0, 0.0, 0.0),
+                ));
+            run(&mut app, fps / 10);
+            app.world_mut().trigger(TargetWarped {
+                entity: body,
+                delta: Vec3::new(-2e4, 0.0, 0.0),
+            });
+            if !in_flight {
+                run(&mut app, 3 * fps);
+                assert!(shape(&app) < 1e-4, "{fps} fps: at rest {}", shape(&app));
+            } else {
+                app.update();
+                assert!(shape(&app) > 1e-2, "{fps} fps: not stretched in flight");
+            }
+            app.world_mut()
+                .entity_mut(body)
+                .remove::<TranslationSpring>();
+            let mut widest = 0.0_f32;
+            for _ in 0..fps {
+                app.update();
+                widest = widest.max(shape(&app));
+            }
+            if !in_flight {
+                assert!(
+                    widest < 1e-4,
+                    "{fps} fps: the hand-over stretched it by {widest}"
+                );
+            }
+            run(&mut app, 2 * fps);
+            assert!(
+                shape(&app) < 1e-4,
+                "{fps} fps, in flight {in_flight}: {}",
+                shape(&app)
+            );
         }
     }
 }

@@ -9,7 +9,7 @@ use crate::clock::SpringTime;
 use crate::layers::{LayerSystems, SpringLayers};
 use crate::spring::{SpringMotion, SpringSystems, add_systems_on_first_use};
 use crate::tracking::{TargetWarped, WorldPositions, take_warp};
-use crate::transform::{Scale, Translation};
+use crate::transform::{Scale, Translation, TranslationSpring};
 
 /// What a [`SquashStretch`] keeps while it deforms.
 #[derive(Reflect, Debug, Default, Clone, Copy, PartialEq, Eq)]
@@ -192,6 +192,18 @@ impl SquashStretch {
         motion.last_velocity = velocity;
         velocity
     }
+
+    /// The velocity of an entity moved by its translation spring, now at `position`: the
+    /// spring's own. The estimate's history follows along and pending warps are dropped (the
+    /// spring's velocity has no teleport in it), so that a spring removed later hands over
+    /// without a stale jump.
+    fn velocity_of_spring(&mut self, position: Option<Vec3>, velocity: Vec3) -> Vec3 {
+        let motion = &mut self.motion;
+        motion.last_position = position;
+        motion.last_velocity = velocity;
+        motion.warp = Vec3::ZERO;
+        velocity
+    }
 }
 
 /// A [`TargetWarped`]: a squashed entity leaves the jump out of its next velocity.
@@ -237,7 +249,8 @@ fn squash_and_stretch(
         &mut SquashStretch,
         &mut SpringLayers<Scale>,
         &Transform,
-        Option<&SpringMotion<Translation>>,
+        // The motion of a removed spring stays behind, frozen: only a live one counts.
+        Option<(&SpringMotion<Translation>, &TranslationSpring)>,
     )>,
     positions: WorldPositions,
 ) {
@@ -248,7 +261,7 @@ fn squash_and_stretch(
     for (entity, mut squash, mut layers, transform, motion) in &mut bodies {
         let squash = squash.bypass_change_detection();
         let velocity = match (motion, positions.of(entity)) {
-            (Some(motion), _) => motion.velocity(),
+            (Some((motion, _)), position) => squash.velocity_of_spring(position, motion.velocity()),
             (None, Some(position)) => squash.velocity_from(position, dt),
             (None, None) => Vec3::ZERO,
         };
