@@ -24,7 +24,6 @@ use serde::de::DeserializeOwned;
 use sprung::{RestThreshold, Spring};
 
 use crate::choreography::{Advance, OnInterrupt, Repeat, SpringSequence};
-use crate::control::SpringControl;
 use crate::property::{SpringProperty, ValueOf};
 use crate::spring::{
     PropertySpring, PropertySystems, SpringPhase, SpringUpdate, add_property_systems,
@@ -427,14 +426,13 @@ fn changed<A: Asset>(events: &mut MessageReader<AssetEvent<A>>) -> Vec<AssetId<A
 /// Gives presets that loaded or changed to the springs on property `P` that use them (through
 /// [`UsePropertyPreset<P>`], or else [`UseSpringPreset`]), and presets that are already loaded
 /// to springs that started using them.
-fn apply_presets<P, C>(
+fn apply_presets<P>(
     mut events: MessageReader<AssetEvent<SpringPreset>>,
     presets: Res<Assets<SpringPreset>>,
-    mut every_spring: Query<(Ref<UseSpringPreset>, &mut C), Without<UsePropertyPreset<P>>>,
-    mut this_property: Query<(Ref<UsePropertyPreset<P>>, &mut C)>,
+    mut every_spring: Query<(Ref<UseSpringPreset>, &mut PropertySpring<P>), Without<UsePropertyPreset<P>>>,
+    mut this_property: Query<(Ref<UsePropertyPreset<P>>, &mut PropertySpring<P>)>,
 ) where
     P: SpringProperty,
-    C: SpringControl<P>,
 {
     let changed = changed(&mut events);
     let uses = every_spring
@@ -450,9 +448,9 @@ fn apply_presets<P, C>(
             continue;
         }
         if let Some(preset) = presets.get(preset) {
-            spring.set_parameters(preset.spring);
+            spring.set_spring(preset.spring);
             if let Some(rest) = preset.rest {
-                spring.set_rest_threshold(rest);
+                spring.set_rest(rest);
             }
         }
     }
@@ -533,7 +531,7 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     ];
     add_systems_on_first_use(app, &users, SpringUpdate, |schedule| {
         schedule.add_systems(
-            apply_presets::<P, PropertySpring<P>>
+            apply_presets::<P>
                 .in_set(PropertySystems::<P>::phase(SpringPhase::Configure))
                 .run_if(
                     resource_exists::<Assets<SpringPreset>>.and_then(

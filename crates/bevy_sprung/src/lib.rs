@@ -93,7 +93,6 @@ pub mod choreography;
 pub mod clock;
 #[cfg(feature = "color")]
 pub mod color;
-pub mod control;
 #[cfg(feature = "curve")]
 pub mod curve;
 pub mod follow;

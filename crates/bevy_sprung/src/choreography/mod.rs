@@ -76,7 +76,7 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     });
     add_systems_on_first_use(app, &sequences, SpringUpdate, |schedule| {
         schedule.add_systems(
-            systems::drive_sequences::<P, PropertySpring<P>, SpringAsleep<P>>
+            systems::drive_sequences::<P, SpringAsleep<P>>
                 .in_set(PropertySystems::<P>::phase(SpringPhase::Choreograph))
                 .run_if(any_with_component::<SpringSequence<P>>),
         );

@@ -6,9 +6,8 @@ use bevy::prelude::*;
 
 use super::sequence::{Advance, SequencePhase, SpringSequence, Tick};
 use crate::clock::SpringTime;
-use crate::control::SpringControl;
 use crate::property::SpringProperty;
-use crate::spring::{SpringMotion, property_event, trigger_if_alive};
+use crate::spring::{PropertySpring, SpringMotion, property_event, trigger_if_alive};
 
 /// Triggered on an entity when its [`SpringSequence<P>`] has played its last step: the
 /// tween-completion event for a whole choreography.
@@ -34,19 +33,18 @@ property_event!(SequenceInterrupted);
 
 /// Before property `P`'s springs step: moves every playing sequence on (a delay that ran out,
 /// a step that settled or timed out), detects interruptions, and triggers the events.
-pub(super) fn drive_sequences<P, C, A>(
+pub(super) fn drive_sequences<P, A>(
     time: SpringTime,
     mut commands: Commands,
     mut sequences: Query<(
         Entity,
         &mut SpringSequence<P>,
-        &mut C,
+        &mut PropertySpring<P>,
         Option<&SpringMotion<P>>,
         Has<A>,
     )>,
 ) where
     P: SpringProperty,
-    C: SpringControl<P>,
     A: Component,
 {
     let steps = time.steps();
@@ -68,7 +66,7 @@ pub(super) fn drive_sequences<P, C, A>(
         let arrived = on_step
             && match sequence.current().map(|step| step.advance) {
                 Some(Advance::Within(distance)) => motion.is_some_and(|motion| {
-                    let omega = spring.parameters().natural_frequency();
+                    let omega = spring.spring().natural_frequency();
                     asleep || motion.is_within(target, distance, omega)
                 }),
                 _ => asleep,
@@ -79,9 +77,9 @@ pub(super) fn drive_sequences<P, C, A>(
             Tick::Start => {
                 if let Some(step) = sequence.current().copied() {
                     if let Some(parameters) = step.spring {
-                        spring.set_parameters(parameters);
+                        spring.set_spring(parameters);
                     }
-                    spring.retarget(step.target);
+                    spring.set_target(step.target);
                 }
             }
             Tick::Completed => {

@@ -27,7 +27,6 @@ use core::marker::PhantomData;
 
 use bevy::prelude::*;
 
-use crate::control::SpringControl;
 use crate::property::{SpringProperty, ValueOf};
 use crate::spring::{
     PropertySpring, PropertySystems, SpringPhase, SpringSystems, SpringUpdate,
@@ -184,19 +183,18 @@ impl<P: SpringProperty> fmt::Debug for InteractionTargets<P> {
 
 /// Before property `P`'s springs step: retargets the spring of every entity whose state or
 /// targets changed (a retarget keeps the velocity).
-fn retarget_on_interaction<P, C>(
+fn retarget_on_interaction<P>(
     mut springs: Query<
-        (&InteractionState, &InteractionTargets<P>, &mut C),
+        (&InteractionState, &InteractionTargets<P>, &mut PropertySpring<P>),
         Or<(Changed<InteractionState>, Changed<InteractionTargets<P>>)>,
     >,
 ) where
     P: SpringProperty,
-    C: SpringControl<P>,
 {
     for (state, targets, mut spring) in &mut springs {
         let target = targets.target(*state);
         if spring.target() != target {
-            spring.retarget(target);
+            spring.set_target(target);
         }
     }
 }
@@ -220,7 +218,7 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     });
     add_systems_on_first_use(app, &targets, SpringUpdate, |schedule| {
         schedule.add_systems(
-            retarget_on_interaction::<P, PropertySpring<P>>
+            retarget_on_interaction::<P>
                 .in_set(PropertySystems::<P>::phase(SpringPhase::Input))
                 .run_if(any_with_component::<InteractionTargets<P>>),
         );

@@ -20,7 +20,6 @@ use sprung::{RestThreshold, Spring};
 
 use super::table::TransitionTable;
 use crate::clock::SpringClock;
-use crate::control::SpringControl;
 use crate::property::{OffsetOf, SpringProperty, ValueOf, VelocityOf};
 use crate::space::{Carried, SpringSpace, SpringVector};
 
@@ -656,43 +655,6 @@ impl<P: SpringProperty> PropertySpring<P> {
     #[inline]
     pub(crate) fn target_rate(&self) -> OffsetOf<P> {
         self.target_velocity.into()
-    }
-}
-
-impl<P: SpringProperty> SpringControl<P> for PropertySpring<P> {
-    #[inline]
-    fn target(&self) -> ValueOf<P> {
-        self.target
-    }
-
-    #[inline]
-    fn parameters(&self) -> Spring<f32> {
-        self.spring
-    }
-
-    #[inline]
-    fn retarget(&mut self, target: ValueOf<P>) {
-        self.set_target(target);
-    }
-
-    #[inline]
-    fn set_parameters(&mut self, spring: Spring<f32>) {
-        self.set_spring(spring);
-    }
-
-    #[inline]
-    fn set_rest_threshold(&mut self, rest: RestThreshold<f32>) {
-        self.set_rest(rest);
-    }
-
-    #[inline]
-    fn kick(&mut self, impulse: OffsetOf<P>) {
-        self.add_impulse(impulse);
-    }
-
-    #[inline]
-    fn clock(&self) -> Option<SpringClock> {
-        self.clock
     }
 }
 
