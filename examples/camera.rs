@@ -22,6 +22,7 @@ use bevy::math::StableInterpolate;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringSystems;
 
 /// Where the camera sits relative to the player, and where it looks.
 const OFFSET: Vec3 = Vec3::new(0.0, 5.0, 11.0);

@@ -21,6 +21,7 @@ use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 use bevy_sprung::chain::SpringChain;
 use bevy_sprung::inertia::{DragBounds, Inertia};
+use bevy_sprung::juice::Conserve;
 use bevy_sprung::layers::{LayerSpring, SpringLayerPlugin};
 use bevy_sprung::prelude::*;
 

@@ -12,6 +12,7 @@
 
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringSystems;
 use sprung::Regime;
 
 /// Pixels per unit of displacement.

@@ -10,6 +10,7 @@
 
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::{SpringMotion, SpringSystems};
 
 /// Waypoints for when there is no cursor (milliseconds per waypoint, then the points).
 const AUTOPILOT_PERIOD_MS: u128 = 900;

@@ -34,8 +34,12 @@ use bevy::render::render_resource::{Extent3d, TextureDimension, TextureFormat};
 use bevy::sprite::Anchor;
 use bevy::window::{PrimaryWindow, WindowRef};
 use bevy_sprung::color::SpriteColor;
+use bevy_sprung::color::SpriteColorSpring;
+use bevy_sprung::interaction::{DragReleased, Snap};
+use bevy_sprung::juice::Conserve;
 use bevy_sprung::juice::JuiceSystems;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::{SpringMotion, SpringSystems};
 
 /// The cards' colours.
 const CARD_COLORS: [Color; 5] = [

@@ -24,6 +24,8 @@
 
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::presence::StaggerChildren;
+use bevy_sprung::ui::{MomentumScroll, PopLayout};
 
 const NAMES: [&str; 12] = [
     "Iron sword",

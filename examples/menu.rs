@@ -21,6 +21,11 @@
 use bevy::input::mouse::MouseMotion;
 use bevy::prelude::*;
 use bevy_sprung::asset::{UseSequencePreset, UseSpringPreset};
+use bevy_sprung::choreography::{
+    OnInterrupt, SequenceCompleted, SequenceInterrupted, SpringGroup, SpringGroupSettled,
+};
+use bevy_sprung::clock::SpringClock;
+use bevy_sprung::color::TextColorSpring;
 use bevy_sprung::prelude::*;
 use bevy_sprung::ui::{UiTransformScale, UiTransformTranslation};
 

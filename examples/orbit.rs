@@ -16,6 +16,7 @@ use bevy::core_pipeline::tonemapping::Tonemapping;
 use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll};
 use bevy::prelude::*;
 use bevy_sprung::camera::{BlendTrack, RigMotion};
+use bevy_sprung::camera::{CameraBlend, CameraOcclusion, CameraTargets, OrbitRig, VirtualCamera};
 use bevy_sprung::prelude::*;
 
 #[derive(Component)]

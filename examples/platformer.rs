@@ -18,6 +18,9 @@
 //! ```
 
 use bevy::prelude::*;
+use bevy_sprung::camera::{
+    CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, ScreenPosition,
+};
 use bevy_sprung::prelude::*;
 
 /// The level: the camera's view stays inside it.

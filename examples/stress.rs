@@ -12,6 +12,7 @@
 use bevy::diagnostic::{Diagnostic, DiagnosticsStore, FrameTimeDiagnosticsPlugin};
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringAsleep;
 
 /// Sprites to start with.
 const START_COUNT: usize = 20_000;

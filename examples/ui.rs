@@ -18,7 +18,10 @@ use bevy::picking::backend::HitData;
 use bevy::picking::events::{Enter, Leave, Pointer, Press, Release};
 use bevy::picking::pointer::{Location, PointerButton, PointerId};
 use bevy::prelude::*;
+use bevy_sprung::clock::SpringClock;
+use bevy_sprung::color::BorderColorSpring;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spin::{Spin, SpinAngleSpring};
 
 const PANEL_WIDTH: f32 = 300.0;
 const IDLE: Color = Color::srgb(0.16, 0.18, 0.24);

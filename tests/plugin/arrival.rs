@@ -8,7 +8,10 @@ use std::collections::HashMap;
 use bevy::color::Oklaba;
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::property::SpringProperty;
 use bevy_sprung::spin::SpinAngle;
+use bevy_sprung::spin::{Spin, SpinAngleSpring};
+use bevy_sprung::spring::SpringAsleep;
 use bevy_sprung::ui::{NodeLeft, NodeLeftSpring, UiTransformTranslation};
 use sprung::Scalar;
 

@@ -5,6 +5,7 @@ use bevy::prelude::*;
 use bevy::reflect::PartialReflect;
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::SpringInputError;
+use bevy_sprung::spring::SpringMotion;
 
 use crate::harness::{
     app, asleep, assert_move_alike, motion, run, spawn_translation, translation, translation_spring,

@@ -7,9 +7,14 @@ use bevy::camera::{OrthographicProjection, Projection};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy::window::{PrimaryWindow, WindowResolution};
+use bevy_sprung::camera::{
+    CameraGoal, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
+};
 use bevy_sprung::camera::{CameraRigSystems, RigHorizontal, RigMotion, RigVertical};
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringAsleep;
 use bevy_sprung::spring::SpringUpdate;
+use bevy_sprung::tracking::TargetWarped;
 
 use crate::harness::{app, run_pattern};
 

@@ -3,6 +3,8 @@
 use bevy::camera::visibility::ViewVisibility;
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringMotion;
+use bevy_sprung::visibility::CatchUpWhenHidden;
 
 use crate::harness::{app, run, translation};
 

@@ -27,13 +27,29 @@ use bevy_sprung::camera::{
     BlendLens, BlendRotation, BlendTranslation, CameraGoal, ConfinerVolume, RigHorizontal,
     RigHorizontalSpring, RigLookAhead, RigOrbit, RigVertical, RigZoom,
 };
+use bevy_sprung::camera::{
+    CameraBlend, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
+    ScreenPosition, VirtualCamera,
+};
+use bevy_sprung::chain::ChainCollider;
+use bevy_sprung::choreography::{
+    AllSpringsSettled, SequenceCompleted, SequenceInterrupted, SpringGroup, SpringGroupSettled,
+};
+use bevy_sprung::clock::{DefaultSpringClock, SpringClock};
 use bevy_sprung::inertia::DragBounds;
 use bevy_sprung::interaction::{DragReleased, InteractionTargets, SpringDrag};
 use bevy_sprung::layers::SpringLayerPlugin;
+use bevy_sprung::layers::{LayerSpring, SpringLayers};
 use bevy_sprung::prelude::*;
+use bevy_sprung::presence::StaggerChildren;
 use bevy_sprung::property::{SpringProperty, ValueOf, VelocityOf};
+use bevy_sprung::reduced_motion::KeepMotion;
+use bevy_sprung::spring::{SkipFrames, SpringAsleep, SpringMotion};
+use bevy_sprung::tracking::TargetWarped;
 use bevy_sprung::transform::Scale;
+use bevy_sprung::ui::PopLayout;
 use bevy_sprung::ui::{NodeSize, UiTransformRotation, UiTransformTranslation};
+use bevy_sprung::visibility::CatchUpWhenHidden;
 
 use crate::bad_input::write_by_reflection;
 use crate::harness::{Random, app_with};

@@ -5,7 +5,13 @@ use std::sync::{Arc, Mutex};
 
 use bevy::prelude::*;
 use bevy_sprung::choreography::SequencePhase;
+use bevy_sprung::choreography::{
+    AllSpringsSettled, OnInterrupt, Repeat, SequenceCompleted, SequenceInterrupted, SpringGroup,
+    SpringGroupSettled,
+};
 use bevy_sprung::prelude::*;
+use bevy_sprung::reduced_motion::KeepMotion;
+use bevy_sprung::spring::SpringAsleep;
 
 use crate::harness::{app, elapsed, motion, run, targets_visited, translation, translation_spring};
 

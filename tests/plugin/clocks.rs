@@ -1,7 +1,9 @@
 //! Which clock a spring runs on, and stepping in `FixedUpdate`.
 
 use bevy::prelude::*;
+use bevy_sprung::clock::SpringClock;
 use bevy_sprung::prelude::*;
+use bevy_sprung::presence::StaggerChildren;
 
 use crate::harness::{app, app_with, exact, run, spawn_translation, translation};
 

@@ -6,6 +6,7 @@
 use bevy::ecs::entity_disabling::Disabled;
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringAsleep;
 
 use crate::harness::{
     app, asleep, assert_stepped_from, many_translations, motion, run, translation,

@@ -13,7 +13,9 @@ use bevy::log::tracing_subscriber::registry::Registry;
 use bevy::prelude::*;
 use bevy_sprung::interaction::InteractionTargets;
 use bevy_sprung::prelude::*;
+use bevy_sprung::space::Linear;
 use bevy_sprung::transform::Scale;
+use bevy_sprung::ui::MomentumScroll;
 
 use crate::harness::app;
 

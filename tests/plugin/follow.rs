@@ -2,7 +2,9 @@
 //! come at uneven rates.
 
 use bevy::prelude::*;
+use bevy_sprung::follow::TargetMotion;
 use bevy_sprung::prelude::*;
+use bevy_sprung::tracking::TargetWarped;
 
 use crate::harness::{app, run_pattern};
 

@@ -6,6 +6,7 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
 use bevy_sprung::property::SpringProperty;
+use bevy_sprung::spring::{SpringAsleep, SpringMotion};
 use sprung::SpringState;
 
 /// A headless app with the spring plugin, advancing `1/fps` seconds per update. Like every

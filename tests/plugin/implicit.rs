@@ -3,6 +3,7 @@
 
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::ui::{NodeWidth, NodeWidthSpring};
 
 use crate::harness::{app, asleep, motion, run};
 

@@ -9,7 +9,9 @@ use bevy::ui::{
     ComputedUiRenderTargetInfo, ComputedUiTargetCamera, UiGlobalTransform, UiScale, UiSystems,
     ui_layout_system,
 };
+use bevy_sprung::clock::{DefaultSpringClock, SpringClock};
 use bevy_sprung::prelude::*;
+use bevy_sprung::ui::{LayoutOffset, MomentumScroll, PopLayout, ScrollSettled};
 use bevy_sprung::ui::{LayoutScale, LayoutTranslation};
 
 use crate::harness::{app, asleep, run};

@@ -6,6 +6,9 @@ use core::time::Duration;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
+use bevy_sprung::presence::{
+    Entered, Exited, PresencePhase, StaggerChildren, StaggerOrder, StaggerWhen,
+};
 
 use crate::harness::{app, asleep, frame, motion, run, translation};
 

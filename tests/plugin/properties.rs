@@ -2,7 +2,10 @@
 
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::space::Linear;
 use bevy_sprung::space::rotation_vector;
+use bevy_sprung::spring::SpringSystems;
+use bevy_sprung::transform::SignedScaleSpring;
 
 use crate::harness::{
     app, asleep, assert_stepped_from, many_translations, motion, run, translation,

@@ -3,7 +3,9 @@
 use bevy::ecs::intern::Interned;
 use bevy::ecs::schedule::{LogLevel, ScheduleBuildSettings, ScheduleLabel, Schedules};
 use bevy::prelude::*;
+use bevy_sprung::choreography::SpringGroup;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringAsleep;
 use bevy_sprung::spring::SpringUpdate;
 
 use crate::harness::{app, run};

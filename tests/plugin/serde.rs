@@ -2,6 +2,8 @@
 //! in an app, and invalid files are clear errors.
 
 use bevy::prelude::*;
+use bevy_sprung::clock::SpringClock;
+use bevy_sprung::juice::Conserve;
 use bevy_sprung::prelude::*;
 
 use crate::harness::{app, asleep, assert_move_alike, run, translation};

@@ -2,6 +2,7 @@
 
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::{SpringMotion, SpringSystems};
 
 use crate::harness::{app, asleep, run, spawn_translation, translation};
 

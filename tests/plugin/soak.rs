@@ -9,6 +9,8 @@ use std::time::Duration;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spin::{Spin, SpinAngleSpring};
+use bevy_sprung::spring::SpringAsleep;
 use bevy_sprung::ui::{NodeLeft, NodeLeftSpring};
 
 use crate::harness::{Random, app};

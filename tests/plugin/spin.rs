@@ -5,6 +5,7 @@ use core::f32::consts::TAU;
 use bevy::prelude::*;
 use bevy_sprung::prelude::*;
 use bevy_sprung::spin::SpinAngle;
+use bevy_sprung::spin::{Spin, SpinAngleSpring};
 
 use crate::harness::{app, asleep, run};
 

@@ -2,7 +2,9 @@
 
 use bevy::color::Oklaba;
 use bevy::prelude::*;
+use bevy_sprung::color::{SpriteColorSpring, TextColorSpring};
 use bevy_sprung::prelude::*;
+use bevy_sprung::ui::UiTransformRotationSpring;
 use bevy_sprung::ui::{NodeLeftSpring, NodeTopSpring, NodeWidthSpring, UiTransformRotation};
 
 use crate::harness::{app, asleep, run};

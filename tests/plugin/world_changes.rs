@@ -4,11 +4,16 @@
 //! Each test protects one defined behaviour (see the README's "How stable").
 
 use bevy::prelude::*;
+use bevy_sprung::choreography::{
+    AllSpringsSettled, SequenceCompleted, SpringGroup, SpringGroupSettled,
+};
 use bevy_sprung::interaction::SpringDrag;
 use bevy_sprung::prelude::*;
 use bevy_sprung::property::{SpringProperty, ValueOf};
 use bevy_sprung::transform::Scale;
+use bevy_sprung::ui::UiTransformRotationSpring;
 use bevy_sprung::ui::{NodeSize, UiTransformRotation, UiTransformTranslationSpring};
+use bevy_sprung::visibility::CatchUpWhenHidden;
 
 use crate::harness::{app, asleep, assert_stepped_from, run, spawn_translation, translation};
 use crate::interaction::{drag, drag_end, drag_start, ui_position};

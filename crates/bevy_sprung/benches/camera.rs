@@ -24,6 +24,9 @@ use bevy::camera::{OrthographicProjection, Projection};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy::window::{PrimaryWindow, WindowResolution};
+use bevy_sprung::camera::{
+    CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig, ScreenPosition,
+};
 use bevy_sprung::prelude::*;
 use criterion::{Criterion, criterion_group, criterion_main};
 

@@ -23,6 +23,7 @@ use bevy::time::TimeUpdateStrategy;
 use bevy::ui::update::propagate_ui_target_cameras;
 use bevy::ui::{ComputedUiRenderTargetInfo, ComputedUiTargetCamera, UiScale, UiSystems};
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringAsleep;
 use bevy_sprung::ui::LayoutTranslation;
 use callgrind::callgrind;
 use criterion::{Criterion, criterion_group};

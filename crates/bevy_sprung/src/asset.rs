@@ -429,7 +429,10 @@ fn changed<A: Asset>(events: &mut MessageReader<AssetEvent<A>>) -> Vec<AssetId<A
 fn apply_presets<P>(
     mut events: MessageReader<AssetEvent<SpringPreset>>,
     presets: Res<Assets<SpringPreset>>,
-    mut every_spring: Query<(Ref<UseSpringPreset>, &mut PropertySpring<P>), Without<UsePropertyPreset<P>>>,
+    mut every_spring: Query<
+        (Ref<UseSpringPreset>, &mut PropertySpring<P>),
+        Without<UsePropertyPreset<P>>,
+    >,
     mut this_property: Query<(Ref<UsePropertyPreset<P>>, &mut PropertySpring<P>)>,
 ) where
     P: SpringProperty,

@@ -24,6 +24,7 @@ pub enum SpringClock {
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::clock::{DefaultSpringClock, SpringClock};
 ///
 /// // A menu-only app: every spring on the real clock, so pausing the game never stops the UI.
 /// let mut app = App::new();

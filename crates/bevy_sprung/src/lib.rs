@@ -160,74 +160,42 @@ pub mod guides {
 pub struct ReadmeDoctests;
 pub use sprung;
 
-/// The types most apps need: `use bevy_sprung::prelude::*;`. Every spring alias and every
-/// property marker of the built-in properties is here (see the README's table of properties).
+/// What a first app needs: `use bevy_sprung::prelude::*;`.
+///
+/// The plugin group, [`Spring`](sprung::Spring) and its presets, the spring components of the
+/// `Transform` and the commonest UI properties with their markers, and one entry component
+/// per job (follow, camera rig, presence, sequence, juice, chain, drag). Everything else is
+/// reached through the module named by its job: `camera` for the rig's parts (`DeadZone`,
+/// `Confiner`, `GroupFraming`, …), [`presence`] for staggering and its events, [`choreography`]
+/// for groups and sequence events, `ui` for every node property, `color`, [`spring`] for
+/// the sets, events and motion, [`space`] for how values spring.
 pub mod prelude {
     #[cfg(feature = "asset")]
-    pub use crate::asset::{UsePropertyPreset, UseSequencePreset, UseSpringPreset};
-    #[cfg(feature = "camera_occlusion")]
-    pub use crate::camera::CameraOcclusion;
+    pub use crate::asset::UseSpringPreset;
     #[cfg(feature = "camera")]
-    pub use crate::camera::{
-        CameraBlend, CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, ConfinerVolume,
-        DeadZone, GroupFraming, LookAhead, OrbitRig, ScreenPosition, VirtualCamera,
-    };
-    pub use crate::chain::{ChainCollider, SpringChain};
-    pub use crate::choreography::{
-        Advance, AllSpringsSettled, LoopMode, OnInterrupt, Repeat, SequenceCompleted,
-        SequenceInterrupted, SpringGroup, SpringGroupSettled, SpringSequence,
-    };
-    pub use crate::clock::{DefaultSpringClock, SpringClock};
+    pub use crate::camera::{CameraRig, CameraTarget};
+    pub use crate::chain::SpringChain;
+    pub use crate::choreography::SpringSequence;
     #[cfg(feature = "ui")]
-    pub use crate::color::{
-        BackgroundColorSpring, BorderColorSpring, ImageNodeColor, ImageNodeColorSpring,
-        TextColorSpring,
-    };
-    #[cfg(feature = "sprite")]
-    pub use crate::color::{SpriteColor, SpriteColorSpring};
-    pub use crate::follow::{SpringFollow, TargetMotion};
+    pub use crate::color::BackgroundColorSpring;
+    pub use crate::follow::SpringFollow;
     pub use crate::implicit::ImplicitSpring;
     pub use crate::inertia::Inertia;
     #[cfg(feature = "picking")]
-    pub use crate::interaction::{
-        DragBounds, DragFollow, DragReleased, InteractionState, InteractionTargets, Snap, SnapLine,
-        SpringDrag,
-    };
-    pub use crate::juice::{Conserve, Shake, SquashStretch};
-    pub use crate::layers::{LayerSpring, SpringLayerPlugin, SpringLayers};
-    pub use crate::presence::{
-        EnterFrom, Entered, ExitTo, Exited, Presence, PresenceCommands, PresencePhase,
-        StaggerChildren, StaggerOrder, StaggerWhen,
-    };
-    pub use crate::property::SpringProperty;
-    pub use crate::reduced_motion::{KeepMotion, ReducedMotion};
-    #[cfg(feature = "color")]
-    pub use crate::space::OklabColor;
-    #[cfg(feature = "ui")]
-    pub use crate::space::{Length, Length2};
-    pub use crate::space::{Linear, NeverThroughZero, ShortestAngle, ShortestArc};
-    pub use crate::spin::{Spin, SpinAngle, SpinAngleSpring};
-    pub use crate::spring::{
-        PropertySpring, SkipFrames, SpringAsleep, SpringMotion, SpringSettled, SpringSystems,
-        SpringTargetMut, SpringWoke,
-    };
+    pub use crate::interaction::{InteractionState, InteractionTargets, SpringDrag};
+    pub use crate::juice::{Shake, SquashStretch};
+    pub use crate::presence::{EnterFrom, ExitTo, Presence, PresenceCommands};
+    pub use crate::reduced_motion::ReducedMotion;
+    pub use crate::spring::{PropertySpring, SpringSettled, SpringTargetMut};
     pub use crate::spring_property;
-    pub use crate::tracking::TargetWarped;
     pub use crate::transform::{
-        Rotation, RotationSpring, Scale, ScaleSpring, SignedScale, SignedScaleSpring, Translation,
-        TranslationSpring,
+        Rotation, RotationSpring, Scale, ScaleSpring, Translation, TranslationSpring,
     };
     #[cfg(feature = "ui")]
     pub use crate::ui::{
-        LayoutOffset, LayoutSpring, MomentumScroll, NodeBottom, NodeBottomSpring, NodeHeight,
-        NodeHeightSpring, NodeLeft, NodeLeftSpring, NodePosition, NodePositionSpring, NodeRight,
-        NodeRightSpring, NodeSize, NodeSizeSpring, NodeTop, NodeTopSpring, NodeWidth,
-        NodeWidthSpring, PopLayout, ScrollSettled, UiTransformRotation, UiTransformRotationSpring,
-        UiTransformScale, UiTransformScaleSpring, UiTransformTranslation,
-        UiTransformTranslationSpring,
+        LayoutSpring, NodeSize, NodeSizeSpring, UiTransformScale, UiTransformScaleSpring,
+        UiTransformTranslation, UiTransformTranslationSpring,
     };
-    #[cfg(feature = "visibility")]
-    pub use crate::visibility::CatchUpWhenHidden;
     pub use crate::{SpringPlugins, SpringPropertyPlugin};
     pub use sprung::{RestThreshold, Spring};
 }

@@ -33,6 +33,7 @@ use crate::spring::SpringSchedulePlugin;
 /// use bevy_sprung::chain::SpringChainPlugin;
 /// use bevy_sprung::juice::SpringJuicePlugin;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::clock::SpringClock;
 ///
 /// App::new()
 ///     .add_plugins((MinimalPlugins, SpringPlugins::default()))

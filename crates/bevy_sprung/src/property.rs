@@ -66,6 +66,7 @@ pub type VelocityOf<P> = <<P as SpringProperty>::Space as SpringSpace>::Velocity
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::space::Linear;
 ///
 /// #[derive(Component, Default)]
 /// struct Engine { throttle: f32 }

@@ -25,6 +25,7 @@ use crate::spring::{SpringPropertyStepPlugin, is_registered};
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::space::Linear;
 ///
 /// #[derive(Component, Default)]
 /// struct Health {

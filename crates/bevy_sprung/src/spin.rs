@@ -27,6 +27,7 @@ use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_s
 /// use core::f32::consts::TAU;
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::spin::{Spin, SpinAngleSpring};
 ///
 /// fn spawn(mut commands: Commands) {
 ///     // A coin that flips three times about its x axis, with a little bounce at the end.

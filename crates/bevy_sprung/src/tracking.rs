@@ -44,6 +44,7 @@ impl WorldPositions<'_, '_> {
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::tracking::TargetWarped;
 ///
 /// fn respawn(mut players: Query<(Entity, &mut Transform)>, mut commands: Commands) {
 ///     for (player, mut transform) in &mut players {

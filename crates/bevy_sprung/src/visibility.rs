@@ -24,6 +24,7 @@ use crate::spring::{
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::visibility::CatchUpWhenHidden;
 ///
 /// fn spawn(mut commands: Commands) {
 ///     // A prop that bobs where the camera may not be looking.

@@ -25,6 +25,7 @@ use bevy::ecs::schedule::ScheduleLabel;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringAsleep;
 use bevy_sprung::sprung::SpringState;
 use bevy_tweening::lens::TransformPositionLens;
 use bevy_tweening::{RepeatCount, RepeatStrategy, Tween, TweenAnim, TweeningPlugin};

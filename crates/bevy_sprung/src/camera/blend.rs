@@ -23,6 +23,7 @@ use crate::spring::{PropertySpring, PropertySystems, SpringPhase, add_property_s
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::camera::{CameraBlend, CameraTargets, VirtualCamera};
 ///
 /// fn spawn(mut commands: Commands) {
 ///     let player = commands.spawn(Transform::default()).id();

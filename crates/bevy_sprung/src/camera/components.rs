@@ -39,6 +39,7 @@ use crate::spring::{PropertySpring, SpringTargetMut};
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::camera::{CameraTargets, Confiner, DeadZone, LookAhead, ScreenPosition};
 ///
 /// fn spawn(mut commands: Commands) {
 ///     let player = commands.spawn(Transform::from_xyz(300.0, 80.0, 0.0)).id();
@@ -191,6 +192,7 @@ impl CameraRig {
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::camera::CameraGoal;
 /// use bevy_sprung::camera::CameraRigSystems;
 /// use bevy_sprung::spring::SpringUpdate;
 ///
@@ -577,6 +579,7 @@ impl GroupFraming {
 /// use bevy::input::mouse::AccumulatedMouseMotion;
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::camera::OrbitRig;
 ///
 /// fn orbit_with_mouse(motion: Res<AccumulatedMouseMotion>, mut orbits: Query<&mut OrbitRig>) {
 ///     for mut orbit in &mut orbits {

@@ -31,6 +31,7 @@ use crate::spring::{PropertySpring, SpringTargetMut, add_systems_on_first_use};
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::camera::{CameraOcclusion, CameraTargets, OrbitRig};
 ///
 /// fn spawn(mut commands: Commands) {
 ///     let player = commands.spawn(Transform::default()).id();

@@ -28,6 +28,7 @@ use crate::spring::{SpringWoke, trigger_if_alive};
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::choreography::{SpringGroup, SpringGroupSettled};
 ///
 /// fn open_menu(mut commands: Commands) {
 ///     for index in 0..4 {

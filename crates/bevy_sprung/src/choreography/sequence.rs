@@ -120,6 +120,7 @@ pub enum SequencePhase {
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::choreography::Repeat;
 ///
 /// fn spawn_menu(mut commands: Commands) {
 ///     for index in 0..5 {

@@ -185,7 +185,11 @@ impl<P: SpringProperty> fmt::Debug for InteractionTargets<P> {
 /// targets changed (a retarget keeps the velocity).
 fn retarget_on_interaction<P>(
     mut springs: Query<
-        (&InteractionState, &InteractionTargets<P>, &mut PropertySpring<P>),
+        (
+            &InteractionState,
+            &InteractionTargets<P>,
+            &mut PropertySpring<P>,
+        ),
         Or<(Changed<InteractionState>, Changed<InteractionTargets<P>>)>,
     >,
 ) where

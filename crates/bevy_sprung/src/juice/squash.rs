@@ -53,6 +53,7 @@ pub enum Conserve {
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::juice::Conserve;
 ///
 /// fn spawn(mut commands: Commands) {
 ///     commands.spawn((

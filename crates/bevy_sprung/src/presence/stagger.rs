@@ -23,6 +23,7 @@ use crate::clock::SpringTime;
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::presence::{StaggerChildren, StaggerOrder};
 ///
 /// fn deal_cards(mut commands: Commands) {
 ///     commands

@@ -15,6 +15,7 @@ use super::vector::SpringVector;
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::space::Linear;
 ///
 /// #[derive(Component)]
 /// struct Volume(f32);

@@ -219,6 +219,7 @@ impl<P: SpringProperty> fmt::Debug for VelocityChange<P> {
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::spring::SpringMotion;
 ///
 /// // A squash that follows how fast each sprung entity moves.
 /// fn speeds(springs: Query<&SpringMotion<Translation>>) {

@@ -77,6 +77,7 @@ pub struct SpringSettled<P: SpringProperty> {
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::spring::SpringWoke;
 ///
 /// fn spawn(mut commands: Commands) {
 ///     commands

@@ -437,6 +437,7 @@ pub(super) fn draw_offsets(
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::ui::PopLayout;
 /// use bevy_sprung::ui::UiTransformScale;
 ///
 /// fn spawn_row(mut commands: Commands) {

@@ -27,6 +27,7 @@ use crate::spring::{PropertySpring, SpringSettled, trigger_if_alive};
 /// ```
 /// use bevy::prelude::*;
 /// use bevy_sprung::prelude::*;
+/// use bevy_sprung::ui::MomentumScroll;
 ///
 /// fn spawn_list(mut commands: Commands) {
 ///     commands
