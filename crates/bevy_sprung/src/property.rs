@@ -91,8 +91,7 @@ pub type VelocityOf<P> = <<P as SpringProperty>::Space as SpringSpace>::Velocity
 /// }
 /// assert_eq!(app.world().get::<Engine>(engine).unwrap().throttle, 1.0);
 /// ```
-// The two forms expand alike, each in full: neither calls the macro again, so an expansion
-// names no item of this crate's root beyond `$crate::property`.
+// The field form is the accessor form with a field's accessors: one expansion to maintain.
 #[macro_export]
 macro_rules! spring_property {
     (
@@ -100,46 +99,13 @@ macro_rules! spring_property {
         $visibility:vis $name:ident : $component:ident :: $field:tt as $space:ty
         $(, rest: $rest:expr)? $(,)?
     ) => {
-        $(#[$attribute])*
-        #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-        $visibility struct $name;
-
-        impl $crate::property::__macro::TypePath for $name {
-            fn type_path() -> &'static str {
-                concat!(module_path!(), "::", stringify!($name))
-            }
-
-            fn short_type_path() -> &'static str {
-                stringify!($name)
-            }
-
-            fn type_ident() -> Option<&'static str> {
-                Some(stringify!($name))
-            }
-
-            fn module_path() -> Option<&'static str> {
-                Some(module_path!())
-            }
-
-            fn crate_name() -> Option<&'static str> {
-                module_path!().split("::").next()
-            }
-        }
-
-        impl $crate::property::SpringProperty for $name {
-            type Component = $component;
-            type Space = $space;
-            $(const DEFAULT_REST: $crate::property::__macro::RestThreshold<f32> = $rest;)?
-
-            #[inline]
-            fn get(component: &$component) -> $crate::property::ValueOf<Self> {
-                component.$field
-            }
-
-            #[inline]
-            fn set(component: &mut $component, value: $crate::property::ValueOf<Self>) {
-                component.$field = value;
-            }
+        $crate::spring_property! {
+            $(#[$attribute])*
+            $visibility $name : $component {
+                get: |component| component.$field,
+                set: |component, value| component.$field = value,
+            } as $space
+            $(, rest: $rest)?
         }
     };
     (
