@@ -63,7 +63,9 @@
 //!   feature's part of it, the plugins of the built-in properties ([`SpringTransformPlugin`],
 //!   `SpringColorPlugin`, `SpringUiPlugin`), and [`SpringPlugins`].
 //!
-//! Add the domain plugins alone to spring only what you need.
+//! Add the domain plugins alone to spring only what you need. The
+//! [architecture guide](guides::architecture) follows one frame through these layers and shows
+//! where a new property or feature plugs in.
 //!
 //! # Features
 //! - `visibility`: [`CatchUpWhenHidden`](visibility::CatchUpWhenHidden), which needs
@@ -127,6 +129,11 @@ pub use property_plugin::{SpringPropertyPlugin, SpringTransformPlugin};
 
 /// Guides: long-form documentation.
 pub mod guides {
+    /// How the crate is built: the layers, one frame's path from a target to a written
+    /// `Transform`, and where a new property or feature plugs in.
+    #[doc = include_str!("../docs/architecture.md")]
+    pub mod architecture {}
+
     /// From bevy_tweening to bevy_sprung: every bevy_tweening 0.16 feature and the code that
     /// replaces it. (Its examples use the `ui` and `asset` features.)
     #[cfg(all(feature = "ui", feature = "asset"))]

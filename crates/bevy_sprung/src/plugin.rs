@@ -66,8 +66,8 @@ use crate::spring::SpringSchedulePlugin;
 /// Bevy's defaults. On more cores, ask for a compute thread per core (the I/O and async threads
 /// mostly sleep) to step them on all of them. On two cores this helps frames where many
 /// `Transform`s move, as Bevy's transform propagation runs on the compute pool alone: whole
-/// frames of a million moving springs were measurably faster with it (with the setting in the
-/// next section; the README's Performance section has the figures).
+/// frames where most `Transform`s move gain from it (with the setting in the next section; the
+/// performance log has the figures).
 /// ```
 /// use bevy::app::{TaskPoolOptions, TaskPoolPlugin, TaskPoolThreadAssignmentPolicy};
 /// use bevy::prelude::*;
@@ -88,19 +88,17 @@ use crate::spring::SpringSchedulePlugin;
 ///     .add_plugins((MinimalPlugins.set(task_pools), SpringPlugins::default()))
 ///     .update();
 /// ```
-/// On this crate's two-core benchmark machine, moving springs step nearly twice as fast on both
-/// cores as on one. Each spring steps independently (the same result on any number of
-/// threads), so the split should keep scaling with cores until memory bandwidth, not
-/// arithmetic, bounds the step (a spring and its `Transform` are read and written every
-/// frame).
+/// Each spring steps independently (the same result on any number of threads), so moving
+/// springs step faster with each core until memory bandwidth, not arithmetic, bounds the step
+/// (a spring and its `Transform` are read and written every frame).
 ///
 /// # Scenes where most `Transform`s move
 /// Bevy's transform propagation first marks which hierarchies changed, so that a scene that
 /// mostly stands still propagates little ([`StaticTransformOptimizations`], on by default).
 /// When most `Transform`s move every frame, as in a field of a million springs, that marking
-/// is all cost: on the two-core benchmark machine it took most of a frame with a million
-/// moving springs. Turn it off for such a scene and the whole frame (springs and propagation)
-/// costs about what a hand-written Euler spring's frame does:
+/// is all cost, and it can outweigh the springs themselves. Turn it off for such a scene and the
+/// whole frame costs what the springs and the propagation need (the performance log compares it
+/// with a hand-written Euler spring's frame):
 /// ```
 /// use bevy::prelude::*;
 /// use bevy::transform::StaticTransformOptimizations;

@@ -2,11 +2,10 @@
 
 /// A spring's slot ticket or, where it has no slot, its time pending: a spring with time
 /// pending has none (its next visible step is the general one, which catches up), so one field
-/// holds either. That keeps the motion of a `Vec2` spring to 48 bytes, a multiple of 16, in
-/// which only the state load of one motion in four straddles two cache lines (about one of
-/// the usual step's 16-byte accesses in five did at 52 bytes); with the time in a field of its
-/// own, `Vec2` and UI translation springs stepped measurably slower for the same instructions
-/// (the performance log has the figures).
+/// holds either. That keeps the motion of a `Vec2` spring to 48 bytes, a multiple of 16, so
+/// that fewer of the step's 16-byte loads straddle two cache lines than at 52 bytes; with the
+/// time in a field of its own, `Vec2` and UI translation springs stepped slower for the same
+/// instructions (the performance log has the figures).
 ///
 /// Two `u32` halves, aligned to 4 bytes (not padding a `Vec2` or `f32` spring's motion to 8),
 /// read as one 8-byte load: a slot's ticket, or with the high half all ones (tickets from
