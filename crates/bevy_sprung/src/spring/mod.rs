@@ -19,9 +19,8 @@ mod table;
 mod tests;
 mod ticks;
 
-pub use component::{
-    PropertySpring, SpringAsleep, SpringInputError, SpringMotion, SpringTargetMut,
-};
+pub use component::target_mut::SpringTargetMut;
+pub use component::{PropertySpring, SpringAsleep, SpringInputError, SpringMotion};
 pub use event::{SpringSettled, SpringWoke};
 pub use plugin::{SpringPropertyStepPlugin, SpringSchedulePlugin};
 pub use preference::{KeepMotion, ReducedMotion};

@@ -1,6 +1,12 @@
-//! The spring component and its sleep marker.
+//! The spring component: its configuration ([`PropertySpring`], here), its motion
+//! ([`SpringMotion`]) and its sleep marker. Beside them: retargeting through change detection
+//! (`target_mut`), the file form (`serde_impls`), the stepping paths (`step`) and the slot
+//! ticket (`ticket`).
 
+#[cfg(feature = "serde")]
+mod serde_impls;
 pub(super) mod step;
+pub(super) mod target_mut;
 mod ticket;
 
 use ticket::SlotTicket;
@@ -8,9 +14,7 @@ use ticket::SlotTicket;
 use core::any::TypeId;
 use core::fmt;
 use core::marker::PhantomData;
-use core::ops::DerefMut;
 
-use bevy::ecs::change_detection::DetectChangesMut;
 use bevy::ecs::lifecycle::HookContext;
 use bevy::ecs::world::DeferredWorld;
 use bevy::log::warn_once;
@@ -516,8 +520,9 @@ impl<P: SpringProperty> PropertySpring<P> {
     /// `target` is refused: one warning is logged and nothing changes
     /// ([`try_set_target`](Self::try_set_target) returns the refusal).
     ///
-    /// Through a `Mut` from a query, [`set_target_if_neq`](SpringTargetMut::set_target_if_neq)
-    /// does the same without marking the component changed when the target is already `target`.
+    /// Through a `Mut` from a query,
+    /// [`set_target_if_neq`](crate::spring::SpringTargetMut::set_target_if_neq) does the same
+    /// without marking the component changed when the target is already `target`.
     #[inline]
     pub fn set_target(&mut self, target: ValueOf<P>) {
         let _refused = self.try_set_target(target);
@@ -669,84 +674,6 @@ fn finite_velocity<V: SpringVector>(velocity: V, what: &str) -> Result<V, Spring
     }
 }
 
-/// Retargeting through Bevy's change detection: on a `Mut<PropertySpring<P>>` from a query (or
-/// any [`DetectChangesMut`]), [`set_target_if_neq`](Self::set_target_if_neq) retargets only
-/// when the target differs, and otherwise leaves the component untouched — not marked changed,
-/// so a sleeping spring stays asleep. It replaces the `if spring.target() != x` guard, as Bevy's
-/// `set_if_neq` does for whole components; [`set_target_velocity_if_neq`](Self::set_target_velocity_if_neq)
-/// does the same for a moving target's velocity.
-///
-/// # Example
-/// ```
-/// use bevy::prelude::*;
-/// use bevy_sprung::prelude::*;
-///
-/// #[derive(Component)]
-/// struct Selected(bool);
-///
-/// // Runs every frame; only a change of selection touches (and wakes) a spring.
-/// fn grow_selected(mut pieces: Query<(&Selected, &mut ScaleSpring)>) {
-///     for (selected, mut scale) in &mut pieces {
-///         let size = if selected.0 { 1.2 } else { 1.0 };
-///         scale.set_target_if_neq(Vec3::splat(size));
-///     }
-/// }
-/// # let mut app = App::new();
-/// # app.add_plugins((MinimalPlugins, SpringPlugins::default())).add_systems(Update, grow_selected);
-/// # app.world_mut().spawn((Transform::default(), Selected(true), ScaleSpring::new(Spring::bouncy(), Vec3::ONE)));
-/// # app.update();
-/// ```
-pub trait SpringTargetMut {
-    /// The target's type.
-    type Value;
-
-    /// Retargets (as [`PropertySpring::set_target`]) if `target` differs from the current
-    /// target, and returns whether it did. A non-finite `target` is refused with one warning and
-    /// returns `false`.
-    fn set_target_if_neq(&mut self, target: Self::Value) -> bool;
-
-    /// The target velocity's type.
-    type Velocity;
-
-    /// Sets the target's velocity (as [`PropertySpring::set_target_velocity`]) if it differs
-    /// from the current one, and returns whether it did. A non-finite velocity is refused with
-    /// one warning and returns `false`.
-    fn set_target_velocity_if_neq(&mut self, velocity: Self::Velocity) -> bool;
-}
-
-impl<P, D> SpringTargetMut for D
-where
-    P: SpringProperty,
-    D: DetectChangesMut<Inner = PropertySpring<P>> + DerefMut<Target = PropertySpring<P>>,
-{
-    type Value = ValueOf<P>;
-
-    #[inline]
-    fn set_target_if_neq(&mut self, target: ValueOf<P>) -> bool {
-        if self.bypass_change_detection().target == target {
-            return false;
-        }
-        if !P::Space::is_valid(target) {
-            warn_once!("bevy_sprung: refused a non-finite spring target {target:?}");
-            return false;
-        }
-        let spring: &mut PropertySpring<P> = self;
-        spring.target = target;
-        true
-    }
-
-    type Velocity = VelocityOf<P>;
-
-    #[inline]
-    fn set_target_velocity_if_neq(&mut self, velocity: VelocityOf<P>) -> bool {
-        if self.bypass_change_detection().target_velocity == velocity {
-            return false;
-        }
-        let spring: &mut PropertySpring<P> = self;
-        spring.try_set_target_velocity(velocity).is_ok()
-    }
-}
-
 /// Present while the spring on property `P` of this entity rests; the plugin adds and removes
 /// it. Resting springs are not iterated, so a scene of sleeping springs costs almost nothing;
 /// one whose target changes, that is kicked, or whose property something else writes, wakes.
@@ -771,160 +698,5 @@ impl<P: SpringProperty> Clone for SpringAsleep<P> {
 impl<P: SpringProperty> fmt::Debug for SpringAsleep<P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "SpringAsleep<{}>", P::short_type_path())
-    }
-}
-
-#[cfg(feature = "serde")]
-mod serde_impls {
-    //! The spring's configuration in a file: parameters, target, velocities, tolerances and
-    //! clock. Everything read is validated as the setters would; an invalid value is an error
-    //! that names it.
-
-    use bevy::math::VectorSpace;
-    use serde::de::{self, Deserializer};
-    use serde::{Deserialize, Serialize, Serializer};
-    use sprung::{RestThreshold, Spring};
-
-    use super::{PropertySpring, VelocityChange};
-    use crate::clock::SpringClock;
-    use crate::property::{OffsetOf, SpringProperty, ValueOf};
-    use crate::space::{SpringSpace, SpringVector};
-
-    /// A field that may be left out, written plainly when present (no `Some(…)` in RON).
-    struct Given<T>(Option<T>);
-
-    impl<T> Default for Given<T> {
-        fn default() -> Self {
-            Self(None)
-        }
-    }
-
-    impl<'de, T: Deserialize<'de>> Deserialize<'de> for Given<T> {
-        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-            T::deserialize(deserializer).map(|value| Self(Some(value)))
-        }
-    }
-
-    /// What a file says of a spring.
-    #[derive(Deserialize)]
-    #[serde(
-        deny_unknown_fields,
-        rename = "PropertySpring",
-        bound = "V: Deserialize<'de>, O: Deserialize<'de>"
-    )]
-    struct Read<V, O> {
-        spring: Spring<f32>,
-        target: V,
-        #[serde(default)]
-        velocity: Given<O>,
-        #[serde(default)]
-        target_velocity: Given<O>,
-        #[serde(default)]
-        rest: Given<RestThreshold<f32>>,
-        #[serde(default)]
-        clock: Given<SpringClock>,
-    }
-
-    /// What is written.
-    #[derive(Serialize)]
-    #[serde(rename = "PropertySpring")]
-    struct Written<'a, V, O> {
-        spring: &'a Spring<f32>,
-        target: &'a V,
-        #[serde(skip_serializing_if = "Option::is_none", serialize_with = "plain")]
-        velocity: Option<O>,
-        target_velocity: &'a O,
-        rest: &'a RestThreshold<f32>,
-        #[serde(skip_serializing_if = "Option::is_none", serialize_with = "plain")]
-        clock: Option<SpringClock>,
-    }
-
-    /// A present value written as itself, as [`Given`] reads it back.
-    #[expect(
-        clippy::ref_option,
-        reason = "serde's `serialize_with` passes the field by reference"
-    )]
-    fn plain<S: Serializer, T: Serialize>(
-        value: &Option<T>,
-        serializer: S,
-    ) -> Result<S::Ok, S::Error> {
-        match value {
-            Some(value) => value.serialize(serializer),
-            None => serializer.serialize_none(),
-        }
-    }
-
-    /// Writes `(spring, target[, velocity], target_velocity, rest[, clock])`, `velocity` if one
-    /// was set that the spring has not yet applied (a starting velocity); its motion
-    /// ([`SpringMotion`](super::SpringMotion)) is not configuration and is not written (a
-    /// spring read back starts from wherever its property is).
-    impl<P: SpringProperty> Serialize for PropertySpring<P>
-    where
-        ValueOf<P>: Serialize,
-        OffsetOf<P>: Serialize,
-    {
-        fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-            let target_velocity = self.target_rate();
-            Written {
-                spring: &self.spring,
-                target: &self.target,
-                velocity: self
-                    .velocity_change
-                    .replace
-                    .then(|| self.velocity_change.change()),
-                target_velocity: &target_velocity,
-                rest: &self.rest,
-                clock: self.clock,
-            }
-            .serialize(serializer)
-        }
-    }
-
-    /// Reads a spring: `spring` (any parametrisation, see [`Spring`]'s `Deserialize`) and
-    /// `target` are required; `velocity`, `target_velocity`, `rest` and `clock` default to
-    /// zero, the property's tolerances and the default clock. A non-finite target or velocity
-    /// is an error, as is an invalid spring.
-    impl<'de, P: SpringProperty> Deserialize<'de> for PropertySpring<P>
-    where
-        ValueOf<P>: Deserialize<'de>,
-        OffsetOf<P>: Deserialize<'de>,
-    {
-        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-            let read = Read::<ValueOf<P>, OffsetOf<P>>::deserialize(deserializer)?;
-            if !P::Space::is_valid(read.target) {
-                return Err(de::Error::custom(format_args!(
-                    "spring target {:?} is not finite",
-                    read.target
-                )));
-            }
-            let mut spring = Self::new(read.spring, read.target);
-            let mut target_velocity = spring.target_rate();
-            let starts_moving = read.velocity.0.is_some();
-            let mut velocity = OffsetOf::<P>::ZERO;
-            for (name, given, field) in [
-                ("velocity", read.velocity, &mut velocity),
-                (
-                    "target_velocity",
-                    read.target_velocity,
-                    &mut target_velocity,
-                ),
-            ] {
-                if let Given(Some(value)) = given {
-                    if !value.is_finite() {
-                        return Err(de::Error::custom(format_args!(
-                            "spring {name} {value:?} is not finite"
-                        )));
-                    }
-                    *field = value;
-                }
-            }
-            spring.target_velocity = target_velocity.into();
-            spring.velocity_change = VelocityChange::new(starts_moving, velocity);
-            spring.clock = read.clock.0;
-            if let Given(Some(rest)) = read.rest {
-                spring.set_rest(rest);
-            }
-            Ok(spring)
-        }
     }
 }
