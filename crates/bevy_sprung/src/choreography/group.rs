@@ -8,7 +8,7 @@ use bevy::platform::collections::HashSet;
 use bevy::prelude::*;
 
 use crate::property::SpringProperty;
-use crate::spring::{SpringWoke, trigger_if_alive};
+use crate::spring::{PropertySpring, SpringAsleep, SpringWoke, trigger_if_alive};
 
 /// Makes this entity's springs report together: when every spring on the entity (any property)
 /// has settled, [`AllSpringsSettled`] is triggered on it, once; and when every spring of every
@@ -153,9 +153,16 @@ pub(super) fn note_woken<P: SpringProperty>(
 
 /// After property `C`'s springs stepped: notes the grouped entities whose spring on it is
 /// awake (`A`: the property's sleep marker).
-pub(super) fn note_awake<C: Component, A: Component>(
+pub(super) fn note_awake<P: SpringProperty>(
     mut tracker: ResMut<SettleTracker>,
-    awake: Query<Entity, (With<SpringGroup>, With<C>, Without<A>)>,
+    awake: Query<
+        Entity,
+        (
+            With<SpringGroup>,
+            With<PropertySpring<P>>,
+            Without<SpringAsleep<P>>,
+        ),
+    >,
 ) {
     for entity in &awake {
         tracker.awake.insert(entity);

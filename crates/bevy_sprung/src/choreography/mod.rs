@@ -23,7 +23,7 @@ use bevy::prelude::*;
 
 use crate::property::SpringProperty;
 use crate::spring::{
-    PropertySpring, PropertySystems, SpringAsleep, SpringPhase, SpringSystems, SpringUpdate,
+    PropertySpring, PropertySystems, SpringPhase, SpringSystems, SpringUpdate,
     add_systems_on_first_use, spring_schedule, warn_missing,
 };
 
@@ -76,7 +76,7 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     });
     add_systems_on_first_use(app, &sequences, SpringUpdate, |schedule| {
         schedule.add_systems(
-            systems::drive_sequences::<P, SpringAsleep<P>>
+            systems::drive_sequences::<P>
                 .in_set(PropertySystems::<P>::phase(SpringPhase::Choreograph))
                 .run_if(any_with_component::<SpringSequence<P>>),
         );
@@ -84,7 +84,7 @@ pub(crate) fn add_property<P: SpringProperty>(app: &mut App) {
     let groups = [TypeId::of::<SpringGroup>()];
     add_systems_on_first_use(app, &groups, SpringUpdate, |schedule| {
         schedule.add_systems(
-            group::note_awake::<PropertySpring<P>, SpringAsleep<P>>
+            group::note_awake::<P>
                 .in_set(PropertySystems::<P>::phase(SpringPhase::Observe))
                 .run_if(any_with_component::<SpringGroup>),
         );

@@ -7,7 +7,7 @@ use bevy::prelude::*;
 use super::sequence::{Advance, SequencePhase, SpringSequence, Tick};
 use crate::clock::SpringTime;
 use crate::property::SpringProperty;
-use crate::spring::{PropertySpring, SpringMotion, property_event, trigger_if_alive};
+use crate::spring::{PropertySpring, SpringAsleep, SpringMotion, property_event, trigger_if_alive};
 
 /// Triggered on an entity when its [`SpringSequence<P>`] has played its last step: the
 /// tween-completion event for a whole choreography.
@@ -33,7 +33,7 @@ property_event!(SequenceInterrupted);
 
 /// Before property `P`'s springs step: moves every playing sequence on (a delay that ran out,
 /// a step that settled or timed out), detects interruptions, and triggers the events.
-pub(super) fn drive_sequences<P, A>(
+pub(super) fn drive_sequences<P>(
     time: SpringTime,
     mut commands: Commands,
     mut sequences: Query<(
@@ -41,11 +41,10 @@ pub(super) fn drive_sequences<P, A>(
         &mut SpringSequence<P>,
         &mut PropertySpring<P>,
         Option<&SpringMotion<P>>,
-        Has<A>,
+        Has<SpringAsleep<P>>,
     )>,
 ) where
     P: SpringProperty,
-    A: Component,
 {
     let steps = time.steps();
     for (entity, mut sequence, mut spring, motion, asleep) in &mut sequences {
