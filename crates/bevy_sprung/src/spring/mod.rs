@@ -2,22 +2,22 @@
 //! it, the schedule and sets they run in, and the events springs trigger. Everything built on
 //! springs (choreography, groups, interaction, assets, juice, followers) stands on this module
 //! and joins its sets or observes its events; this module imports none of them.
+//!
+//! Its public side is the components (`component`), the schedule and sets (`schedule`), the
+//! events (`event`) and the plugins (`plugin`); its systems (`systems`) are the ECS side of the
+//! private step kernel (`kernel`), whose module docs hold a spring's life cycle and the
+//! invariants of its step.
 
-mod cache;
 mod component;
 mod event;
 mod first_use;
+mod kernel;
 mod misconfigured;
-mod parallel;
 mod plugin;
 mod preference;
 mod schedule;
 mod skip;
 mod systems;
-mod table;
-#[cfg(test)]
-mod tests;
-mod ticks;
 
 pub use component::target_mut::SpringTargetMut;
 pub use component::{PropertySpring, SpringAsleep, SpringInputError, SpringMotion};

@@ -7,7 +7,8 @@ use serde::de::{self, Deserializer};
 use serde::{Deserialize, Serialize, Serializer};
 use sprung::{RestThreshold, Spring};
 
-use super::{PropertySpring, VelocityChange};
+use super::PropertySpring;
+use super::config::VelocityChange;
 use crate::clock::SpringClock;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
 use crate::space::{SpringSpace, SpringVector};

@@ -11,26 +11,27 @@ use core::ops::DerefMut;
 
 use sprung::{Spring, SpringState, Transition};
 
-use super::{PropertySpring, SpringMotion};
+use super::cache::TransitionCache;
+use super::table::{PreparedIncrements, SlotIncrements, TransitionTable};
 use crate::clock::FrameSteps;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
 use crate::space::{Carried, SpringSpace, SpringVector};
-use crate::spring::cache::TransitionCache;
+use crate::spring::component::rest_squared;
+use crate::spring::component::{PropertySpring, SpringMotion};
 use crate::spring::preference::ReducedMotion;
-use crate::spring::table::{PreparedIncrements, SlotIncrements, TransitionTable};
 
 /// What one frame did to a spring, and the value to write, if it changed.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Frame<V> {
+pub(super) struct Frame<V> {
     /// What happened.
-    pub(crate) outcome: Stepped,
+    pub(super) outcome: Stepped,
     /// The new value of the property, if it differs from the one it holds.
-    pub(crate) write: Option<V>,
+    pub(super) write: Option<V>,
 }
 
 /// What the usual step did to a spring.
 #[derive(Clone, Copy, Debug)]
-pub(crate) enum UsualStep<V> {
+pub(super) enum UsualStep<V> {
     /// It moved, and keeps moving: the property's new value.
     Moved(V),
     /// It keeps moving, but the property holds the value it would write.
@@ -58,7 +59,7 @@ impl<V> UsualStep<V> {
 
 /// What one frame did to a spring.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Stepped {
+pub(super) enum Stepped {
     /// It moved and keeps moving.
     Moving,
     /// It reached rest and was snapped onto its target.
@@ -117,38 +118,38 @@ fn moving_step<V: SpringVector>(
 /// What Bevy's change ticks say of a spring since its last step, so that its usual step need
 /// not read it.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Unchanged {
+pub(super) struct Unchanged {
     /// Nothing but the stepping system changed the spring's configuration: the usual step
     /// then needs none of it (its slot's ticket is in its motion).
-    pub(crate) config: bool,
+    pub(super) config: bool,
     /// Nothing but the spring wrote its property: its value is what the spring wrote, and is
     /// not compared with it.
-    pub(crate) property: bool,
+    pub(super) property: bool,
 }
 
 /// What the unusual step is told of how a spring came to it.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Unusual {
+pub(super) struct Unusual {
     /// The spring skips this frame (its time is put aside for one exact step later).
-    pub(crate) skipping: bool,
+    pub(super) skipping: bool,
     /// The usual step found the spring's slot, and declined for its state or its value.
-    pub(crate) slot_found: bool,
+    pub(super) slot_found: bool,
 }
 
 /// The transitions a spring's step reads: the property's table of this frame, and a cache of
 /// the transitions the step computes itself (retargets, catch-up, unusual time steps).
-pub(crate) struct Transitions<'a> {
+pub(super) struct Transitions<'a> {
     /// The table of every distinct spring's transition over this frame.
-    pub(crate) table: &'a TransitionTable,
+    pub(super) table: &'a TransitionTable,
     /// Transitions computed for this thread, kept across frames.
-    pub(crate) cache: &'a mut TransitionCache,
+    pub(super) cache: &'a mut TransitionCache,
 }
 
 impl<P: SpringProperty> SpringMotion<P> {
     /// One frame of the spring over `dt` on a component, writing its property if it changed
     /// (through a `Mut`, a write is a change). `skipping`: the frame is put aside for later.
     #[inline]
-    pub(crate) fn step_on<C: DerefMut<Target = P::Component>>(
+    pub(super) fn step_on<C: DerefMut<Target = P::Component>>(
         &mut self,
         config: &mut PropertySpring<P>,
         component: &mut C,
@@ -169,7 +170,7 @@ impl<P: SpringProperty> SpringMotion<P> {
     /// ([`step_usual`](Self::step_usual)) first, which reads nothing it need not; this is the
     /// step for springs it does not loop over (reduced motion, frames skipped).
     #[inline]
-    pub(crate) fn step(
+    pub(super) fn step(
         &mut self,
         config: &mut PropertySpring<P>,
         current: ValueOf<P>,
@@ -202,7 +203,7 @@ impl<P: SpringProperty> SpringMotion<P> {
         reason = "the per-entity loop's hot path: measured cheaper inlined into it than called"
     )]
     #[inline(always)]
-    pub(crate) fn step_usual(
+    pub(super) fn step_usual(
         &mut self,
         current: ValueOf<P>,
         unchanged: Unchanged,
@@ -283,7 +284,7 @@ impl<P: SpringProperty> SpringMotion<P> {
     /// otherwise the general step, with a transition computed (once per distinct spring and
     /// time step, in `cache`).
     #[inline(never)]
-    pub(crate) fn step_unusual(
+    pub(super) fn step_unusual(
         &mut self,
         config: &mut PropertySpring<P>,
         current: ValueOf<P>,
@@ -316,7 +317,7 @@ impl<P: SpringProperty> SpringMotion<P> {
     /// the others step the spring the general way, critically damped at least or with its time
     /// scaled.
     #[inline(never)]
-    pub(crate) fn step_reduced(
+    pub(super) fn step_reduced(
         &mut self,
         config: &mut PropertySpring<P>,
         current: ValueOf<P>,
@@ -332,7 +333,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             self.active_target = target;
             self.offset = Carried::new(OffsetOf::<P>::ZERO);
             self.set_pending(0.0);
-            self.rest_squared = super::rest_squared::<P>(config.rest, target);
+            self.rest_squared = rest_squared::<P>(config.rest, target);
             self.velocity = OffsetOf::<P>::ZERO;
             let outcome = if config.target_rate() == OffsetOf::<P>::ZERO {
                 Stepped::Settled
@@ -388,7 +389,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             return None;
         }
         // Touched: the tolerances may have changed too (a `rest` set through reflection).
-        self.rest_squared = super::rest_squared::<P>(config.rest, config.target);
+        self.rest_squared = rest_squared::<P>(config.rest, config.target);
         let ticket = if table.holds(self.ticket(), &config.spring, clock) {
             self.ticket()
         } else if let Some(ticket) = table.lookup(&config.spring, clock) {
@@ -451,7 +452,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             self.active_target = target;
         }
         // The tolerances as applied toward this target (and any `rest` reflection wrote).
-        self.rest_squared = super::rest_squared::<P>(config.rest, target);
+        self.rest_squared = rest_squared::<P>(config.rest, target);
         // A state already at rest is not stepped: it settles now. (The usual step tests the
         // state it starts from and declines at rest: this is where it settles.)
         let mut squared = (offset.offset.norm_squared(), velocity.norm_squared());

@@ -8,11 +8,11 @@ use proptest::prelude::*;
 use sprung::{RestThreshold, Scalar, Spring, SpringState};
 
 use super::cache::TransitionCache;
-use super::component::step::{Stepped, Transitions};
-use super::component::{PropertySpring, SpringMotion};
+use super::step::{Stepped, Transitions};
 use super::table::TransitionTable;
 use crate::clock::FrameSteps;
 use crate::space::{Linear, NeverThroughZero};
+use crate::spring::component::{PropertySpring, SlotTicket, SpringMotion};
 
 /// A body the tests spring: its position as a translation is (a `Vec3`, stepped in `Vec3A`),
 /// its angle as a spin's, its size as a UI scale's (a `Vec2` kept from crossing zero).
@@ -379,17 +379,12 @@ fn a_ui_scale_spring_streams_48_bytes() {
 fn the_time_pending_and_the_slot_ticket_share_a_field() {
     let mut motion = SpringMotion::<Position>::default();
     assert_eq!(motion.pending().to_bits(), 0);
-    assert!(motion.ticket() >= TransitionTable::NO_TICKET);
-    for ticket in [
-        0,
-        5,
-        u64::from(u32::MAX) + 1,
-        TransitionTable::NO_TICKET - 1,
-    ] {
+    assert!(motion.ticket() >= SlotTicket::NO_SLOT);
+    for ticket in [0, 5, u64::from(u32::MAX) + 1, SlotTicket::NO_SLOT - 1] {
         motion.set_ticket(ticket);
         assert_eq!((motion.ticket(), motion.pending().to_bits()), (ticket, 0));
         motion.clear_ticket();
-        assert!(motion.ticket() >= TransitionTable::NO_TICKET);
+        assert!(motion.ticket() >= SlotTicket::NO_SLOT);
         assert_eq!(motion.pending().to_bits(), 0);
     }
     for seconds in [
@@ -402,7 +397,7 @@ fn the_time_pending_and_the_slot_ticket_share_a_field() {
     ] {
         motion.set_ticket(7);
         motion.set_pending(seconds);
-        assert!(motion.ticket() >= TransitionTable::NO_TICKET, "{seconds}");
+        assert!(motion.ticket() >= SlotTicket::NO_SLOT, "{seconds}");
         assert_eq!(motion.pending().to_bits(), seconds.to_bits());
         motion.clear_ticket();
         assert_eq!(motion.pending().to_bits(), seconds.to_bits());

@@ -196,15 +196,10 @@ impl SplitRows for PrepareRows<'_> {
 }
 
 impl TransitionTable {
-    /// The first of the tickets no slot ever has (the table hands out tickets from 0, one a
-    /// slot, and could not reach it in the life of any program): a spring without a slot
-    /// remembers one of them.
-    pub(crate) const NO_TICKET: u64 = 0xFFFF_FFFF_0000_0000;
-
     /// The index of the slot with `ticket`, if the table has it.
     #[inline]
     fn index_of(&self, ticket: u64) -> Option<usize> {
-        // A ticket from before a clearing wraps far past the end (as do those from `NO_TICKET`
+        // A ticket from before a clearing wraps far past the end (as do those from `SlotTicket::NO_SLOT`
         // up).
         usize::try_from(ticket.wrapping_sub(self.first))
             .ok()
@@ -637,7 +632,11 @@ mod tests {
             assert!(!table.holds(*ticket, spring, *clock));
             assert!(table.parameters(*ticket).is_none());
         }
-        assert!(table.increments(TransitionTable::NO_TICKET).is_none());
+        assert!(
+            table
+                .increments(crate::spring::component::SlotTicket::NO_SLOT)
+                .is_none()
+        );
         for dt in [1.0 / 60.0, 1.0 / 60.0 * 1.0005] {
             let steps = FrameSteps::all(dt);
             table.prepare_for::<Vec2>(steps);
