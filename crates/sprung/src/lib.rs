@@ -60,6 +60,12 @@ mod transition;
 
 pub use error::{Parameter, SpringError};
 
+/// What the file forms of types that hold springs share (feature `serde`).
+#[cfg(feature = "serde")]
+pub mod file_form {
+    pub use crate::serde_impls::Given;
+}
+
 // The README's examples are compiled and run as doc tests.
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]

@@ -23,19 +23,63 @@ enum Preset {
     Bouncy,
 }
 
-/// A field that may be left out: written as the plain value (`half_life: 0.1`, not
-/// `Some(0.1)`), absent as `None`.
-struct Given<T>(Option<T>);
+/// A field of a file form that may be left out: read from the plain value (`half_life: 0.1`,
+/// not `Some(0.1)` as RON spells an `Option`), `None` where the field is absent (with
+/// `#[serde(default)]`), and written back plainly. The file forms of [`Spring`] and of the
+/// springs in `bevy_sprung` use it for their optional fields.
+///
+/// # Example
+/// ```
+/// use serde::{Deserialize, Serialize};
+/// use sprung::file_form::Given;
+///
+/// #[derive(Deserialize, Serialize)]
+/// struct Jump {
+///     height: f32,
+///     #[serde(default, skip_serializing_if = "Given::is_absent")]
+///     hang_time: Given<f32>,
+/// }
+///
+/// let jump: Jump = ron::from_str("(height: 2.0, hang_time: 0.25)").unwrap();
+/// assert_eq!(jump.hang_time.0, Some(0.25));
+/// let jump: Jump = ron::from_str("(height: 2.0)").unwrap();
+/// assert_eq!(jump.hang_time.0, None);
+/// assert_eq!(ron::to_string(&jump).unwrap(), "(height:2.0)");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Given<T>(pub Option<T>);
 
+/// Absent: what a field left out of the file reads as.
 impl<T> Default for Given<T> {
     fn default() -> Self {
         Self(None)
     }
 }
 
+impl<T> Given<T> {
+    /// Whether the field was left out: for `skip_serializing_if`.
+    #[inline]
+    #[must_use]
+    pub fn is_absent(&self) -> bool {
+        self.0.is_none()
+    }
+}
+
 impl<'de, T: Deserialize<'de>> Deserialize<'de> for Given<T> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         T::deserialize(deserializer).map(|value| Self(Some(value)))
+    }
+}
+
+/// The value itself where present (as it is read back); an absent value is best left out of
+/// the output with `skip_serializing_if = "Given::is_absent"`, and is otherwise written as a
+/// unit `None`.
+impl<T: Serialize> Serialize for Given<T> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match &self.0 {
+            Some(value) => value.serialize(serializer),
+            None => serializer.serialize_none(),
+        }
     }
 }
 

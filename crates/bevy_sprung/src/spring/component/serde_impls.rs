@@ -5,6 +5,7 @@
 use bevy::math::VectorSpace;
 use serde::de::{self, Deserializer};
 use serde::{Deserialize, Serialize, Serializer};
+use sprung::file_form::Given;
 use sprung::{RestThreshold, Spring};
 
 use super::PropertySpring;
@@ -12,21 +13,6 @@ use super::config::VelocityChange;
 use crate::clock::SpringClock;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
 use crate::space::{SpringSpace, SpringVector};
-
-/// A field that may be left out, written plainly when present (no `Some(…)` in RON).
-struct Given<T>(Option<T>);
-
-impl<T> Default for Given<T> {
-    fn default() -> Self {
-        Self(None)
-    }
-}
-
-impl<'de, T: Deserialize<'de>> Deserialize<'de> for Given<T> {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        T::deserialize(deserializer).map(|value| Self(Some(value)))
-    }
-}
 
 /// What a file says of a spring.
 #[derive(Deserialize)]
@@ -54,24 +40,12 @@ struct Read<V, O> {
 struct Written<'a, V, O> {
     spring: &'a Spring<f32>,
     target: &'a V,
-    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "plain")]
-    velocity: Option<O>,
+    #[serde(skip_serializing_if = "Given::is_absent")]
+    velocity: Given<O>,
     target_velocity: &'a O,
     rest: &'a RestThreshold<f32>,
-    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "plain")]
-    clock: Option<SpringClock>,
-}
-
-/// A present value written as itself, as [`Given`] reads it back.
-#[expect(
-    clippy::ref_option,
-    reason = "serde's `serialize_with` passes the field by reference"
-)]
-fn plain<S: Serializer, T: Serialize>(value: &Option<T>, serializer: S) -> Result<S::Ok, S::Error> {
-    match value {
-        Some(value) => value.serialize(serializer),
-        None => serializer.serialize_none(),
-    }
+    #[serde(skip_serializing_if = "Given::is_absent")]
+    clock: Given<SpringClock>,
 }
 
 /// Writes `(spring, target[, velocity], target_velocity, rest[, clock])`, `velocity` if one
@@ -88,13 +62,14 @@ where
         Written {
             spring: &self.spring,
             target: &self.target,
-            velocity: self
-                .velocity_change
-                .replace
-                .then(|| self.velocity_change.change()),
+            velocity: Given(
+                self.velocity_change
+                    .replace
+                    .then(|| self.velocity_change.change()),
+            ),
             target_velocity: &target_velocity,
             rest: &self.rest,
-            clock: self.clock,
+            clock: Given(self.clock),
         }
         .serialize(serializer)
     }
