@@ -317,6 +317,47 @@ impl AssetLoader for SequencePresetLoader {
 #[reflect(Component, Debug, Clone)]
 pub struct UseSpringPreset(pub Handle<SpringPreset>);
 
+/// The preset asset `A` at `handle`, applied to what this entity springs on property `P`: when
+/// it loads, and again each time it changes. Used by its two names,
+/// [`UsePropertyPreset<P>`] (a [`SpringPreset`] for the spring on `P`) and
+/// [`UseSequencePreset<P>`] (a [`SequencePreset`], the choreography of `P`).
+#[derive(Component, Reflect)]
+#[component(on_add = first_use::<Self>)]
+#[reflect(Component)]
+pub struct UsePreset<A: Asset, P: SpringProperty> {
+    /// The preset.
+    pub handle: Handle<A>,
+    #[reflect(ignore)]
+    property: PhantomData<fn() -> P>,
+}
+
+impl<A: Asset, P: SpringProperty> UsePreset<A, P> {
+    /// The preset at `handle`, for property `P`.
+    #[must_use]
+    pub fn new(handle: Handle<A>) -> Self {
+        Self {
+            handle,
+            property: PhantomData,
+        }
+    }
+}
+
+impl<A: Asset, P: SpringProperty> Clone for UsePreset<A, P> {
+    fn clone(&self) -> Self {
+        Self::new(self.handle.clone())
+    }
+}
+
+impl<A: Asset, P: SpringProperty> fmt::Debug for UsePreset<A, P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("UsePreset")
+            .field("asset", &A::short_type_path())
+            .field("property", &P::short_type_path())
+            .field("handle", &self.handle)
+            .finish()
+    }
+}
+
 /// Gives the [`SpringPreset`] at this handle to the entity's spring on property `P` only (as
 /// [`UseSpringPreset`] does for every spring of the entity, which it overrides for `P`): when
 /// the preset loads, and again each time it changes.
@@ -339,78 +380,11 @@ pub struct UseSpringPreset(pub Handle<SpringPreset>);
 ///     ));
 /// }
 /// ```
-#[derive(Component, Reflect)]
-#[component(on_add = first_use::<Self>)]
-#[reflect(Component)]
-pub struct UsePropertyPreset<P: SpringProperty> {
-    /// The preset.
-    pub handle: Handle<SpringPreset>,
-    #[reflect(ignore)]
-    property: PhantomData<fn() -> P>,
-}
-
-impl<P: SpringProperty> UsePropertyPreset<P> {
-    /// The preset at `handle`, for the spring on property `P`.
-    #[must_use]
-    pub fn new(handle: Handle<SpringPreset>) -> Self {
-        Self {
-            handle,
-            property: PhantomData,
-        }
-    }
-}
-
-impl<P: SpringProperty> Clone for UsePropertyPreset<P> {
-    fn clone(&self) -> Self {
-        Self::new(self.handle.clone())
-    }
-}
-
-impl<P: SpringProperty> fmt::Debug for UsePropertyPreset<P> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("UsePropertyPreset")
-            .field("property", &P::short_type_path())
-            .field("handle", &self.handle)
-            .finish()
-    }
-}
+pub type UsePropertyPreset<P> = UsePreset<SpringPreset, P>;
 
 /// Gives this entity the [`SpringSequence<P>`] that the [`SequencePreset`] at this handle
 /// describes, when it loads, and again (from the start) each time it changes.
-#[derive(Component, Reflect)]
-#[reflect(Component)]
-pub struct UseSequencePreset<P: SpringProperty> {
-    /// The choreography.
-    pub handle: Handle<SequencePreset>,
-    #[reflect(ignore)]
-    property: PhantomData<fn() -> P>,
-}
-
-impl<P: SpringProperty> UseSequencePreset<P> {
-    /// The choreography at `handle`, for property `P`.
-    #[must_use]
-    pub fn new(handle: Handle<SequencePreset>) -> Self {
-        Self {
-            handle,
-            property: PhantomData,
-        }
-    }
-}
-
-impl<P: SpringProperty> Clone for UseSequencePreset<P> {
-    fn clone(&self) -> Self {
-        Self::new(self.handle.clone())
-    }
-}
-
-impl<P: SpringProperty> fmt::Debug for UseSequencePreset<P> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("UseSequencePreset")
-            .field("property", &P::short_type_path())
-            .field("handle", &self.handle)
-            .finish()
-    }
-}
+pub type UseSequencePreset<P> = UsePreset<SequencePreset, P>;
 
 /// Whether an asset changed this frame (loaded or modified), by id.
 fn changed<A: Asset>(events: &mut MessageReader<AssetEvent<A>>) -> Vec<AssetId<A>> {
