@@ -23,16 +23,11 @@
 //! ```
 
 use bevy::asset::RenderAssetUsages;
-use bevy::camera::RenderTarget;
-use bevy::input::mouse::MouseMotion;
-use bevy::picking::PickingSystems;
 use bevy::picking::events::{Pointer, Press};
-use bevy::picking::input::{PointerInputSettings, mouse_pick_events};
-use bevy::picking::pointer::{Location, PointerAction, PointerButton, PointerId, PointerInput};
+use bevy::picking::pointer::PointerButton;
 use bevy::prelude::*;
 use bevy::render::render_resource::{Extent3d, TextureDimension, TextureFormat};
 use bevy::sprite::Anchor;
-use bevy::window::{PrimaryWindow, WindowRef};
 use bevy_sprung::color::SpriteColor;
 use bevy_sprung::color::SpriteColorSpring;
 use bevy_sprung::interaction::{DragReleased, Snap};
@@ -40,6 +35,14 @@ use bevy_sprung::juice::Conserve;
 use bevy_sprung::juice::JuiceSystems;
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::{SpringMotion, SpringSystems};
+
+#[path = "support/pointer.rs"]
+mod pointer;
+#[path = "support/tour.rs"]
+mod tour;
+
+use pointer::{Ease, Goal, TourPointerPlugin, Waypoint};
+use tour::{Tour, TourPlugin};
 
 /// The cards' colours.
 const CARD_COLORS: [Color; 5] = [
@@ -97,10 +100,6 @@ struct Character;
 #[derive(Component)]
 struct CameraAnchor;
 
-/// The dot that shows where the tour's synthetic pointer is (no cursor is drawn under Xvfb).
-#[derive(Component)]
-struct TourPointer;
-
 /// The line that reports the last event.
 #[derive(Component)]
 struct Status;
@@ -136,45 +135,6 @@ struct Hop {
     phase: HopPhase,
 }
 
-/// The scripted tour runs for [`TOUR_END`] seconds unless the user moves the mouse.
-#[derive(Resource)]
-struct Tour {
-    running: bool,
-    elapsed: f32,
-    /// The elapsed time of the previous frame, to see when a moment of the tour passes.
-    previous: f32,
-    /// Where the synthetic pointer was last written (logical window pixels).
-    position: Option<Vec2>,
-    /// Whether its primary button is down.
-    down: bool,
-    /// The waypoint it is heading for, and where (world) it was when it set off.
-    segment: usize,
-    segment_start: Option<Vec2>,
-    /// The pointer's path.
-    path: Vec<Waypoint>,
-}
-
-impl Tour {
-    /// A tour about to start.
-    fn new() -> Self {
-        Self {
-            running: true,
-            elapsed: 0.0,
-            previous: 0.0,
-            position: None,
-            down: false,
-            segment: usize::MAX,
-            segment_start: None,
-            path: waypoints(),
-        }
-    }
-
-    /// Whether the tour is running and passed `moment` (seconds) this frame.
-    fn passed(&self, moment: f32) -> bool {
-        self.running && self.previous < moment && self.elapsed >= moment
-    }
-}
-
 /// The order in which cards are raised: each press puts its card above every other.
 #[derive(Resource, Default)]
 struct Layers(u16);
@@ -203,26 +163,14 @@ fn main() {
             x: 0.0,
             phase: HopPhase::Grounded,
         })
-        .insert_resource(Tour::new())
-        // While the tour runs it owns the mouse pointer: a cursor that merely sits over the
-        // window (an X server's, at start-up) does not move it.
-        .insert_resource(PointerInputSettings {
-            is_mouse_enabled: false,
-            is_touch_enabled: true,
-        })
+        .add_plugins((
+            TourPlugin::ends_after(TOUR_END),
+            TourPointerPlugin::new(tour_path()),
+        ))
         .add_systems(Startup, setup)
-        // The tour writes its pointer input where the mouse's is written, so this frame's
-        // picking sees it through the same camera transform.
-        .add_systems(
-            First,
-            drive_tour_pointer
-                .in_set(PickingSystems::Input)
-                .after(mouse_pick_events),
-        )
         .add_systems(
             Update,
             (
-                hand_over_mouse,
                 shake_and_punch,
                 react_to_card_states,
                 hop,
@@ -298,10 +246,9 @@ fn slot(index: usize) -> Vec2 {
     Vec2::new(-270.0 + 180.0 * index as f32, SLOT_Y)
 }
 
-/// The camera, the board, the character, the tour's pointer and the text.
+/// The camera, the board, the character and the text.
 fn setup(mut commands: Commands, mut images: ResMut<Assets<Image>>) {
     let rounded = images.add(rounded_square(64, 18.0));
-    let dot = images.add(rounded_square(32, 16.0));
 
     // The camera follows an anchor that `track_character` keeps under the character.
     let anchor = commands.spawn((CameraAnchor, Transform::default())).id();
@@ -317,17 +264,6 @@ fn setup(mut commands: Commands, mut images: ResMut<Assets<Image>>) {
 
     spawn_board(&mut commands, &rounded);
     spawn_character(&mut commands, &rounded);
-    commands.spawn((
-        TourPointer,
-        Sprite {
-            image: dot,
-            color: Color::srgba(1.0, 1.0, 1.0, 0.85),
-            custom_size: Some(Vec2::splat(18.0)),
-            ..default()
-        },
-        Transform::from_xyz(0.0, 0.0, 50.0),
-        Visibility::Hidden,
-    ));
     spawn_text(&mut commands);
 }
 
@@ -472,57 +408,10 @@ fn spawn_text(commands: &mut Commands) {
     ));
 }
 
-/// How the tour's pointer moves into a waypoint.
-#[derive(Clone, Copy)]
-enum Ease {
-    /// At a constant speed (a drag that flings).
-    Linear,
-    /// Starting and stopping smoothly.
-    InOut,
-    /// Starting at twice the average speed and slowing to a stop (a follow-through).
-    Out,
-}
-
-impl Ease {
-    /// The fraction of the way covered at `u`, the fraction of the time.
-    fn apply(self, u: f32) -> f32 {
-        match self {
-            Self::Linear => u,
-            Self::InOut => u * u * (3.0 - 2.0 * u),
-            Self::Out => 1.0 - (1.0 - u) * (1.0 - u),
-        }
-    }
-}
-
-/// Where a waypoint takes the tour's pointer.
-#[derive(Clone, Copy)]
-enum Goal {
-    /// Stay: a hand at rest keeps its place on the screen while the camera moves.
-    Stay,
-    /// To this world point (a card).
-    To(Vec2),
-    /// By this much (world) from where the pointer was when the move began (a drag).
-    By(Vec2),
-}
-
-/// A moment of the tour: the pointer reaches `goal` at `at` seconds, moving as `ease` says, and
-/// from then on its button is `down`.
-struct Waypoint {
-    at: f32,
-    goal: Goal,
-    ease: Ease,
-    down: bool,
-}
-
 /// The tour's pointer path.
-fn waypoints() -> Vec<Waypoint> {
-    let at = |at, goal, ease, down| Waypoint {
-        at,
-        goal,
-        ease,
-        down,
-    };
-    let stay = |moment, down| at(moment, Goal::Stay, Ease::Linear, down);
+fn tour_path() -> Vec<Waypoint> {
+    let at = Waypoint::new;
+    let stay = Waypoint::stay;
     let on_card = |index| Goal::To(card_home(index).truncate() - Vec2::Y * 15.0);
     // Drag so that the throw carries on to slot 3: the card comes to rest `THROW` s of its
     // release velocity further on, i.e. `1 + THROW / FLING_DRAG` times the drag.
@@ -553,114 +442,6 @@ fn waypoints() -> Vec<Waypoint> {
         // Rest on card 5.
         at(4.2, on_card(4), Ease::InOut, false),
     ]
-}
-
-/// The scripted tour's pointer: writes `PointerInput` messages for the mouse pointer, as the
-/// mouse input of `bevy_picking` does for a real cursor, so picking, hover, press, drag and
-/// release all run for real. Mouse motion ends the tour and hands the pointer to the user.
-fn drive_tour_pointer(
-    time: Res<Time<Real>>,
-    mut tour: ResMut<Tour>,
-    mut motion: MessageReader<MouseMotion>,
-    window: Single<Entity, With<PrimaryWindow>>,
-    camera: Single<(&Camera, &GlobalTransform)>,
-    mut input: MessageWriter<PointerInput>,
-    marker: Single<(&mut Transform, &mut Visibility), With<TourPointer>>,
-) {
-    if !tour.running {
-        return;
-    }
-    let (mut marker, mut visibility) = marker.into_inner();
-    let Some(target) = RenderTarget::Window(WindowRef::Primary).normalize(Some(*window)) else {
-        return;
-    };
-    tour.previous = tour.elapsed;
-    tour.elapsed += time.delta_secs();
-    if motion.read().count() > 0 || tour.elapsed >= TOUR_END {
-        tour.running = false;
-        *visibility = Visibility::Hidden;
-        if let (true, Some(position)) = (tour.down, tour.position) {
-            let location = Location { target, position };
-            let release = PointerAction::Release(PointerButton::Primary);
-            input.write(PointerInput::new(PointerId::Mouse, location, release));
-        }
-        info!("scripted tour over: the pointer is yours");
-        return;
-    }
-    let (camera, camera_transform) = *camera;
-    let tour = tour.into_inner();
-    let path = &tour.path;
-    // Where the pointer is now, in the world (the camera may have moved under it).
-    let here = tour
-        .position
-        .and_then(|position| camera.viewport_to_world_2d(camera_transform, position).ok());
-    // The waypoint the pointer is heading for, and whether its button is down meanwhile.
-    let next = path
-        .iter()
-        .position(|waypoint| waypoint.at > tour.elapsed)
-        .unwrap_or(path.len());
-    let down = next > 0 && path[next - 1].down;
-    if tour.segment != next {
-        tour.segment = next;
-        tour.segment_start = here.or(match path[0].goal {
-            Goal::To(point) => Some(point),
-            _ => None,
-        });
-    }
-    let Some(start) = tour.segment_start else {
-        return;
-    };
-    // Past the last waypoint, the pointer stays on its point (or where it is).
-    let (goal, ease, u) = match path.get(next) {
-        Some(waypoint) if next > 0 => {
-            let from = path[next - 1].at;
-            let u = ((tour.elapsed - from) / (waypoint.at - from)).clamp(0.0, 1.0);
-            (waypoint.goal, waypoint.ease, u)
-        }
-        Some(waypoint) => (waypoint.goal, waypoint.ease, 1.0),
-        None => match path.last().map(|last| last.goal) {
-            Some(Goal::To(point)) => (Goal::To(point), Ease::Linear, 1.0),
-            _ => (Goal::Stay, Ease::Linear, 1.0),
-        },
-    };
-    let world = match goal {
-        Goal::Stay => here.unwrap_or(start),
-        Goal::To(point) => start.lerp(point, ease.apply(u)),
-        Goal::By(offset) => start + offset * ease.apply(u),
-    };
-    marker.translation = world.extend(marker.translation.z);
-    *visibility = Visibility::Visible;
-    let position = match (goal, tour.position) {
-        (Goal::Stay, Some(position)) => position,
-        _ => match camera.world_to_viewport(camera_transform, world.extend(0.0)) {
-            Ok(position) => position,
-            Err(_) => return,
-        },
-    };
-    let location = Location { target, position };
-    if tour.position != Some(position) {
-        let delta = tour.position.map_or(Vec2::ZERO, |last| position - last);
-        let moved = PointerAction::Move { delta };
-        input.write(PointerInput::new(PointerId::Mouse, location.clone(), moved));
-        tour.position = Some(position);
-    }
-    // After the move: a fling's release comes with its last motion, as a real throw's does.
-    if down != tour.down {
-        tour.down = down;
-        let action = if down {
-            PointerAction::Press(PointerButton::Primary)
-        } else {
-            PointerAction::Release(PointerButton::Primary)
-        };
-        input.write(PointerInput::new(PointerId::Mouse, location, action));
-    }
-}
-
-/// When the tour is over, the mouse drives the pointer again.
-fn hand_over_mouse(tour: Res<Tour>, mut mouse_input: ResMut<PointerInputSettings>) {
-    if !tour.running && !mouse_input.is_mouse_enabled {
-        mouse_input.is_mouse_enabled = true;
-    }
 }
 
 /// A pressed card is raised above the others (its position spring keeps the new depth), before
@@ -843,11 +624,11 @@ fn show_status(
     mut status: Single<&mut Text, With<Status>>,
     mut shown_running: Local<Option<bool>>,
 ) {
-    if !note.is_changed() && *shown_running == Some(tour.running) {
+    if !note.is_changed() && *shown_running == Some(tour.is_running()) {
         return;
     }
-    *shown_running = Some(tour.running);
-    let who = if tour.running {
+    *shown_running = Some(tour.is_running());
+    let who = if tour.is_running() {
         "  |  scripted tour"
     } else {
         ""

@@ -27,6 +27,11 @@ use bevy_sprung::prelude::*;
 use bevy_sprung::presence::StaggerChildren;
 use bevy_sprung::ui::{MomentumScroll, PopLayout};
 
+#[path = "support/tour.rs"]
+mod tour;
+
+use tour::{Tour, TourPlugin};
+
 const NAMES: [&str; 12] = [
     "Iron sword",
     "Oak shield",
@@ -71,10 +76,6 @@ struct Row(u32);
 #[derive(Component)]
 struct List;
 
-/// The tour runs until a key is pressed; `Time` since it started.
-#[derive(Resource)]
-struct Tour(Option<f32>);
-
 /// A message shown as a toast.
 #[derive(Message)]
 struct Toast(String);
@@ -95,6 +96,7 @@ fn main() {
                 ..default()
             }),
             SpringPlugins::default(),
+            TourPlugin::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.06, 0.07, 0.09)))
         .insert_resource(Inventory {
@@ -109,7 +111,6 @@ fn main() {
             equipped_only: false,
             selected: 0,
         })
-        .insert_resource(Tour(Some(0.0)))
         .add_message::<Toast>()
         .add_systems(Startup, setup)
         .add_systems(
@@ -154,24 +155,14 @@ fn setup(mut commands: Commands) {
     ));
 }
 
-/// The tour: a few seconds of the list's changes, then a fling. Any key ends it.
+/// The tour: a few seconds of the list's changes, then a fling.
 fn tour(
-    time: Res<Time>,
-    mut tour: ResMut<Tour>,
-    keys: Res<ButtonInput<KeyCode>>,
+    tour: Res<Tour>,
     mut inventory: ResMut<Inventory>,
     mut lists: Query<&mut MomentumScroll, With<List>>,
     mut toasts: MessageWriter<Toast>,
 ) {
-    if keys.get_just_pressed().count() > 0 {
-        tour.0 = None;
-    }
-    let Some(elapsed) = tour.0.as_mut() else {
-        return;
-    };
-    let before = *elapsed;
-    *elapsed += time.delta_secs();
-    let at = |t: f32| (before..*elapsed).contains(&t);
+    let at = |moment: f32| tour.passed(moment);
     let mut fling = |velocity: f32| {
         for mut list in &mut lists {
             list.fling(Vec2::Y * velocity);

@@ -18,7 +18,6 @@
 //! cargo run --example menu
 //! ```
 
-use bevy::input::mouse::MouseMotion;
 use bevy::prelude::*;
 use bevy_sprung::asset::{UseSequencePreset, UseSpringPreset};
 use bevy_sprung::choreography::{
@@ -28,6 +27,11 @@ use bevy_sprung::clock::SpringClock;
 use bevy_sprung::color::TextColorSpring;
 use bevy_sprung::prelude::*;
 use bevy_sprung::ui::{UiTransformScale, UiTransformTranslation};
+
+#[path = "support/tour.rs"]
+mod tour;
+
+use tour::{Tour, TourPlugin};
 
 const ITEMS: [&str; 5] = ["Play", "Continue", "Settings", "Credits", "Quit"];
 const PANEL_WIDTH: f32 = 420.0;
@@ -78,13 +82,6 @@ impl Default for StatusNote {
     }
 }
 
-/// The scripted tour runs until the user moves the mouse or presses a key.
-#[derive(Resource)]
-struct Tour {
-    running: bool,
-    elapsed: f32,
-}
-
 fn main() {
     App::new()
         .add_plugins((
@@ -98,14 +95,11 @@ fn main() {
             }),
             // Menus animate while the game is paused: springs on the real clock.
             SpringPlugins::default().with_clock(SpringClock::Real),
+            TourPlugin::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.06, 0.07, 0.09)))
         .init_resource::<Settings>()
         .init_resource::<StatusNote>()
-        .insert_resource(Tour {
-            running: true,
-            elapsed: 0.0,
-        })
         .add_systems(Startup, setup)
         .add_systems(
             Update,
@@ -277,23 +271,16 @@ fn panel_line(text: &str, size: f32) -> impl Bundle {
 }
 
 /// The scripted tour: the menu flies in, "Play" pulses, the pointer hovers "Continue", the
-/// settings panel opens, and so on. Any mouse motion or key hands control to the user.
+/// settings panel opens, and so on, every 9 s.
 fn tour(
-    time: Res<Time<Real>>,
-    mut tour: ResMut<Tour>,
+    tour: Res<Tour>,
     mut settings: ResMut<Settings>,
-    mut motion: MessageReader<MouseMotion>,
-    keys: Res<ButtonInput<KeyCode>>,
     mut items: Query<&mut Hovered, With<MenuItem>>,
 ) {
-    if motion.read().count() > 0 || keys.get_just_pressed().count() > 0 {
-        tour.running = false;
-    }
-    if !tour.running {
+    let Some(elapsed) = tour.time() else {
         return;
-    }
-    tour.elapsed += time.delta_secs();
-    let t = tour.elapsed % 9.0;
+    };
+    let t = elapsed % 9.0;
     // The pointer passes over "Play" (its pulse pauses), "Continue" and "Settings".
     let hovered = [(1.0, 1.6), (1.6, 2.0), (2.0, 2.4)]
         .iter()
@@ -311,7 +298,7 @@ fn tour(
 
 /// With the user in control, items are hovered as their `Interaction` says.
 fn pointer(tour: Res<Tour>, mut items: Query<(&Interaction, &mut Hovered), Changed<Interaction>>) {
-    if tour.running {
+    if tour.is_running() {
         return;
     }
     for (interaction, mut hovered) in &mut items {
@@ -460,7 +447,7 @@ fn show_status(
         ReducedMotion::Snap => "reduced motion: snap",
         ReducedMotion::Scaled(_) => "reduced motion: slower",
     };
-    let who = if tour.running {
+    let who = if tour.is_running() {
         "  |  scripted tour"
     } else {
         ""

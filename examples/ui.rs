@@ -13,7 +13,6 @@
 //! ```
 
 use bevy::camera::NormalizedRenderTarget;
-use bevy::input::mouse::MouseMotion;
 use bevy::picking::backend::HitData;
 use bevy::picking::events::{Enter, Leave, Pointer, Press, Release};
 use bevy::picking::pointer::{Location, PointerButton, PointerId};
@@ -22,6 +21,11 @@ use bevy_sprung::clock::SpringClock;
 use bevy_sprung::color::BorderColorSpring;
 use bevy_sprung::prelude::*;
 use bevy_sprung::spin::{Spin, SpinAngleSpring};
+
+#[path = "support/tour.rs"]
+mod tour;
+
+use tour::{Tour, TourPlugin};
 
 const PANEL_WIDTH: f32 = 300.0;
 const IDLE: Color = Color::srgb(0.16, 0.18, 0.24);
@@ -45,16 +49,6 @@ struct Menu {
     open: bool,
 }
 
-/// The scripted tour runs until the user moves the mouse or presses a key: a pointer of its
-/// own that hovers and presses the buttons, as a user would.
-#[derive(Resource)]
-struct Tour {
-    running: bool,
-    elapsed: f32,
-    /// The button the tour's pointer is over, and whether it presses it.
-    on: Option<(Entity, bool)>,
-}
-
 /// The tour's pointer.
 const TOUR: PointerId = PointerId::Custom(bevy::asset::uuid::Uuid::from_u128(0x5B2));
 
@@ -71,14 +65,10 @@ fn main() {
             }),
             // UI keeps animating while the game is paused: springs on the real clock.
             SpringPlugins::default().with_clock(SpringClock::Real),
+            TourPlugin::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.07, 0.08, 0.1)))
         .init_resource::<Menu>()
-        .insert_resource(Tour {
-            running: true,
-            elapsed: 0.0,
-            on: None,
-        })
         .add_systems(Startup, setup)
         .add_systems(Update, (tour, toggle, animate_menu).chain())
         .run();
@@ -216,34 +206,28 @@ fn setup(mut commands: Commands) {
     ));
 }
 
-/// The scripted tour: open, hover down the buttons, press one, close. Any mouse motion or key
-/// hands control to the user.
+/// The scripted tour, every 7 s: open, hover down the buttons, press one, close, with a pointer
+/// of its own (`on`: the button it is over, and whether it presses it), as a user would.
 fn tour(
-    time: Res<Time<Real>>,
-    mut tour: ResMut<Tour>,
+    tour: Res<Tour>,
+    mut on: Local<Option<(Entity, bool)>>,
     mut menu: ResMut<Menu>,
-    mut motion: MessageReader<MouseMotion>,
-    keys: Res<ButtonInput<KeyCode>>,
     panel: Single<&Children, With<Panel>>,
     mut commands: Commands,
 ) {
-    if motion.read().count() > 0 || keys.get_just_pressed().count() > 0 {
-        tour.running = false;
-    }
-    if !tour.running {
+    let Some(elapsed) = tour.time() else {
         return;
-    }
-    tour.elapsed += time.delta_secs();
-    let t = tour.elapsed % 7.0;
+    };
+    let t = elapsed % 7.0;
     menu.open = (0.3..5.5).contains(&t);
     // Hover each button in turn for 0.6 s from 1.2 s on; press the third in the second half.
     let wanted = hovered_button(t)
         .and_then(|index| panel.get(index).map(|&button| (index, button)))
         .map(|(index, button)| (button, index == 2 && (t - 1.2) % 0.6 > 0.3));
-    if wanted == tour.on {
+    if wanted == *on {
         return;
     }
-    if let Some((button, pressed)) = tour.on {
+    if let Some((button, pressed)) = *on {
         if pressed {
             commands.trigger(pointer(
                 button,
@@ -264,7 +248,7 @@ fn tour(
         }
     }
     if let Some((button, pressed)) = wanted {
-        if tour.on.is_none_or(|(last, _)| last != button) {
+        if on.is_none_or(|(last, _)| last != button) {
             commands.trigger(pointer(
                 button,
                 Enter {
@@ -284,7 +268,7 @@ fn tour(
             ));
         }
     }
-    tour.on = wanted;
+    *on = wanted;
 }
 
 /// The tour's pointer event `event` on `button`.
