@@ -37,6 +37,7 @@ pub use space::LayerSpace;
 
 use crate::property::{SpringProperty, ValueOf};
 use crate::property_plugin::SpringPropertyPlugin;
+use crate::space::FastPath;
 use crate::space::{Linear, LinearValue, SpringSpace};
 use crate::spring::{
     PropertySpring, SpringSystems, add_systems_on_first_use, first_use, warn_missing,
@@ -352,7 +353,7 @@ fn show<P: SpringProperty<Space: LayerSpace>>(
     for (mut layers, mut component) in &mut stacks {
         let base = P::get(&component);
         let value = layers.apply(base);
-        if P::Space::same(value, base) {
+        if P::Space::same(value, base, FastPath) {
             // Nothing to show (every layer zero): nothing to take off either.
             layers.bypass_change_detection().last = None;
             continue;
@@ -364,7 +365,10 @@ fn show<P: SpringProperty<Space: LayerSpace>>(
             );
             continue;
         }
-        if layers.last.is_some_and(|last| P::Space::same(last, value)) {
+        if layers
+            .last
+            .is_some_and(|last| P::Space::same(last, value, FastPath))
+        {
             P::set(component.bypass_change_detection(), value);
         } else {
             P::set(&mut component, value);
@@ -390,7 +394,7 @@ fn take_off<P: SpringProperty<Space: LayerSpace>>(
         let base = if component.is_added() {
             // The component was put back since it was shown: what it holds is a base.
             current
-        } else if P::Space::same(current, shown.value) {
+        } else if P::Space::same(current, shown.value, FastPath) {
             shown.base
         } else {
             layers.remove(current)

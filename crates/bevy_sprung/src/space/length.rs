@@ -4,6 +4,7 @@ use bevy::math::Vec2;
 use bevy::ui::{Val, Val2};
 
 use super::linear::AffineSpace;
+use super::seal::FastPath;
 use super::spring_space::{Carried, SpringSpace};
 
 /// The number of a length in its own unit (pixels for `Px`, percent for `Percent`, …); 0 for
@@ -201,7 +202,7 @@ impl SpringSpace for Length2 {
     /// as 0 only to itself): tested first, as one vector, so that values that differ (a
     /// moving spring's) are told apart without `==`'s branches on the units.
     #[inline]
-    fn same(a: Val2, b: Val2) -> bool {
+    fn same(a: Val2, b: Val2, _: FastPath) -> bool {
         Self::coordinates(a) == Self::coordinates(b) && a == b
     }
 
@@ -210,7 +211,7 @@ impl SpringSpace for Length2 {
     /// as one vector in the same order) told without building the value; the rest (another
     /// unit, or numbers that differ, which `==` may still count equal at zero) by `==`.
     #[inline]
-    fn is_written(current: Val2, target: Val2, offset: Carried<Vec2>) -> bool {
+    fn is_written(current: Val2, target: Val2, offset: Carried<Vec2>, _: FastPath) -> bool {
         let units = Val2::new(in_unit_of(target.x, 0.0), in_unit_of(target.y, 0.0));
         let numbers = (Self::coordinates(target) + offset.offset) + offset.remainder;
         (same_units(current, units) & (Self::coordinates(current) == numbers))
@@ -261,6 +262,7 @@ impl AffineSpace for Length2 {
 
 #[cfg(test)]
 mod tests {
+    use crate::space::seal::FastPath;
     use bevy::math::Vec2;
     use bevy::ui::{Val, Val2};
 
@@ -322,11 +324,11 @@ mod tests {
                 for &ay in &others {
                     for &by in &others {
                         let (a, b) = (Val2::new(ax, ay), Val2::new(bx, by));
-                        assert_eq!(Length2::same(a, b), a == b, "{a:?} {b:?}");
+                        assert_eq!(Length2::same(a, b, FastPath), a == b, "{a:?} {b:?}");
                         for offset in offsets {
                             let written = Length2::at_carried(b, offset) == a;
                             assert_eq!(
-                                Length2::is_written(a, b, offset),
+                                Length2::is_written(a, b, offset, FastPath),
                                 written,
                                 "{a:?} toward {b:?} at {offset:?}"
                             );

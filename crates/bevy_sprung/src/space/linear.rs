@@ -5,6 +5,7 @@ use core::marker::PhantomData;
 use bevy::math::{Vec3, Vec3A};
 use bevy::reflect::{FromReflect, Reflectable};
 
+use super::seal::FastPath;
 use super::spring_space::{Carried, SpringSpace};
 use super::vector::SpringVector;
 
@@ -125,12 +126,12 @@ impl<V: LinearValue> SpringSpace for Linear<V> {
 
     /// Compared in the offset's type: one vector comparison for a `Vec3`.
     #[inline]
-    fn same(a: V, b: V) -> bool {
+    fn same(a: V, b: V, _: FastPath) -> bool {
         a.to_offset() == b.to_offset()
     }
 
     #[inline]
-    fn is_written(current: V, target: V, offset: Carried<V::Offset>) -> bool {
+    fn is_written(current: V, target: V, offset: Carried<V::Offset>, _: FastPath) -> bool {
         (target.to_offset() + offset.offset) + offset.remainder == current.to_offset()
     }
 
@@ -214,8 +215,9 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
         current: Self::Value,
         target: Self::Value,
         offset: Carried<Self::Offset>,
+        _: FastPath,
     ) -> bool {
-        S::is_written(current, target, offset)
+        S::is_written(current, target, offset, FastPath)
     }
 
     /// A retarget moves no value, but the offset from the new target is rounded: where that
@@ -260,13 +262,17 @@ impl<S: AffineSpace> SpringSpace for NeverThroughZero<S> {
         before: Self::Offset,
         after: Carried<Self::Offset>,
         velocity: Self::Offset,
+        _: FastPath,
     ) -> Option<(Carried<Self::Offset>, Self::Offset)> {
-        let (after, velocity) = S::constrain_usual(target, before, after, velocity)?;
-        SpringVector::keeps_sign(S::coordinates(target), before, after.offset)
+        let (after, velocity) = S::constrain_usual(target, before, after, velocity, FastPath)?;
+        SpringVector::keeps_sign(S::coordinates(target), before, after.offset, FastPath)
             .then_some((after, velocity))
     }
 
-    const CONSTRAINS_USUAL_STEP: bool = true;
+    #[inline]
+    fn constrains_usual_step(_: FastPath) -> bool {
+        true
+    }
 
     const DEFAULT_REST: sprung::RestThreshold<f32> = S::DEFAULT_REST;
 }

@@ -14,6 +14,7 @@ mod color;
 mod length;
 mod linear;
 mod rotation;
+mod seal;
 mod spring_space;
 mod vector;
 
@@ -23,6 +24,7 @@ pub use color::OklabColor;
 pub use length::{Length, Length2};
 pub use linear::{AffineSpace, Linear, LinearValue, NeverThroughZero};
 pub use rotation::{ShortestAngle, ShortestArc, rotation_vector};
+pub(crate) use seal::FastPath;
 pub use spring_space::{Carried, SpringSpace};
 pub use vector::SpringVector;
 pub(crate) use vector::is_within_rest;

@@ -5,6 +5,7 @@ use core::fmt::Debug;
 
 use bevy::reflect::{FromReflect, Reflectable};
 
+use super::seal::FastPath;
 use super::vector::SpringVector;
 
 /// An offset carried between steps as an unevaluated sum `offset + remainder`, where the
@@ -195,17 +196,17 @@ pub trait SpringSpace: Send + Sync + 'static {
     /// hundredth of a unit per second) unless the space says otherwise.
     const DEFAULT_REST: sprung::RestThreshold<f32> = sprung::RestThreshold::<f32>::DEFAULT;
 
-    // The plugin's fast path, below: hidden from the docs, with defaults that are right for any
-    // space (from the maps above). A space of the plugin's overrides them with cheaper exact
-    // tests; they are not part of the public API: a custom space implements none of them, and
-    // they may change in any release.
+    // The plugin's fast path, below: sealed (each takes a `FastPath` token, which no code
+    // outside this crate can name, so none can call or override them) and hidden from the
+    // docs, with defaults that are right for any space (from the maps above). A space of the
+    // plugin's overrides them with cheaper exact tests.
 
     /// Whether two values are the same (a spring writes a value only if it is not the same as
     /// the one the property holds). `==` unless the space knows a cheaper exact test.
     #[doc(hidden)]
     #[inline]
     #[must_use]
-    fn same(a: Self::Value, b: Self::Value) -> bool {
+    fn same(a: Self::Value, b: Self::Value, _: FastPath) -> bool {
         a == b
     }
 
@@ -220,6 +221,7 @@ pub trait SpringSpace: Send + Sync + 'static {
         current: Self::Value,
         target: Self::Value,
         offset: Carried<Self::Offset>,
+        _: FastPath,
     ) -> bool {
         Self::at_carried(target, offset) == current
     }
@@ -237,6 +239,7 @@ pub trait SpringSpace: Send + Sync + 'static {
         before: Self::Offset,
         after: Carried<Self::Offset>,
         velocity: Self::Offset,
+        _: FastPath,
     ) -> Option<(Carried<Self::Offset>, Self::Offset)> {
         Some(Self::constrain(target, before, after, velocity))
     }
@@ -247,5 +250,9 @@ pub trait SpringSpace: Send + Sync + 'static {
     /// the step, in one branch for both; otherwise it tests it before the step, where the test
     /// waits on nothing.
     #[doc(hidden)]
-    const CONSTRAINS_USUAL_STEP: bool = false;
+    #[inline]
+    #[must_use]
+    fn constrains_usual_step(_: FastPath) -> bool {
+        false
+    }
 }

@@ -1,6 +1,7 @@
 //! The vectors offsets move in: Bevy's [`NormedVectorSpace`] over `f32`, plus the component-wise
 //! operations a spring needs to stay finite and in range.
 
+use super::seal::FastPath;
 use bevy::math::{NormedVectorSpace, Vec2, Vec3A, Vec4, Vec4Swizzles};
 use bevy::reflect::{FromReflect, Reflectable};
 
@@ -35,11 +36,11 @@ pub trait SpringVector:
     #[must_use]
     fn stop_at_zero(coordinates: Self, before: Self, after: [Self; 3]) -> [Self; 3];
 
-    // The plugin's fast path, below: hidden from the docs, with defaults that are right for any
-    // vector (from the methods above and `NormedVectorSpace`). The plugin's own vectors override
-    // them with shorter sequences of vector instructions, bit for bit the same results. They
-    // are not part of the public API: a custom vector implements none of them, and they may
-    // change in any release.
+    // The plugin's fast path, below: sealed (each takes a `FastPath` token, which no code
+    // outside this crate can name, so none can call or override them) and hidden from the
+    // docs, with defaults that are right for any vector (from the methods above and
+    // `NormedVectorSpace`). The plugin's own vectors override them with shorter sequences of
+    // vector instructions, bit for bit the same results.
 
     /// Whether, with `c = coordinates`, every component of `c + before` and `c + after` has
     /// the same sign and none is zero: then [`stop_at_zero`](Self::stop_at_zero) changes
@@ -50,7 +51,7 @@ pub trait SpringVector:
     #[doc(hidden)]
     #[inline]
     #[must_use]
-    fn keeps_sign(coordinates: Self, before: Self, after: Self) -> bool {
+    fn keeps_sign(coordinates: Self, before: Self, after: Self, _: FastPath) -> bool {
         let _ = (coordinates, before, after);
         false
     }
@@ -62,7 +63,13 @@ pub trait SpringVector:
     #[doc(hidden)]
     #[inline]
     #[must_use]
-    fn steps_on(offset: Self, velocity: Self, rest_squared: (f32, f32), limit: f32) -> bool {
+    fn steps_on(
+        offset: Self,
+        velocity: Self,
+        rest_squared: (f32, f32),
+        limit: f32,
+        _: FastPath,
+    ) -> bool {
         steps_on_by_norms(offset, velocity, rest_squared, limit)
     }
 
@@ -72,7 +79,12 @@ pub trait SpringVector:
     #[doc(hidden)]
     #[inline]
     #[must_use]
-    fn step_increments(offset: Self, velocity: Self, increments: Vec4) -> (Self, Self) {
+    fn step_increments(
+        offset: Self,
+        velocity: Self,
+        increments: Vec4,
+        _: FastPath,
+    ) -> (Self, Self) {
         step_increments_by_parts(offset, velocity, increments)
     }
 
@@ -81,7 +93,11 @@ pub trait SpringVector:
     /// then also keeps them so, 32 bytes a slot instead of 16, for a vector that multiplies
     /// them without a shuffle. `false` by default.
     #[doc(hidden)]
-    const PAIRED_INCREMENTS: bool = false;
+    #[inline]
+    #[must_use]
+    fn paired_increments(_: FastPath) -> bool {
+        false
+    }
 
     /// [`step_increments`](Self::step_increments) with the increments as the pairs
     /// `[d00, d00, d11, d11]` and `[d10, d10, d01, d01]` (see `paired_increments`): a two-lane
@@ -95,9 +111,10 @@ pub trait SpringVector:
         offset: Self,
         velocity: Self,
         [diagonal, cross]: [Vec4; 2],
+        _: FastPath,
     ) -> (Self, Self) {
         let increments = Vec4::new(diagonal.x, cross.z, cross.x, diagonal.z);
-        Self::step_increments(offset, velocity, increments)
+        Self::step_increments(offset, velocity, increments, FastPath)
     }
 }
 
@@ -202,7 +219,7 @@ impl SpringVector for f32 {
 
     #[inline]
     fn stop_at_zero(coordinates: f32, before: f32, after: [f32; 3]) -> [f32; 3] {
-        if Self::keeps_sign(coordinates, before, after[0]) {
+        if Self::keeps_sign(coordinates, before, after[0], FastPath) {
             return after;
         }
         stop_at_zero([coordinates], [before], after.map(|x| [x])).map(|[x]| x)
@@ -210,7 +227,7 @@ impl SpringVector for f32 {
 
     /// See the vectors' test below.
     #[inline]
-    fn keeps_sign(coordinates: f32, before: f32, after: f32) -> bool {
+    fn keeps_sign(coordinates: f32, before: f32, after: f32, _: FastPath) -> bool {
         (coordinates + before) * (coordinates + after) > 0.0
     }
 }
@@ -256,7 +273,7 @@ macro_rules! glam_vector {
             /// a zero the loop keeps in a register (every product `> 0` took a fresh zero every
             /// spring). The two differ only on a NaN product, which finite sums cannot give.
             #[inline]
-            fn keeps_sign(coordinates: Self, before: Self, after: Self) -> bool {
+            fn keeps_sign(coordinates: Self, before: Self, after: Self, _: FastPath) -> bool {
                 let (was, is) = (coordinates + before, coordinates + after);
                 !(was * is).cmple(<$t>::ZERO).any()
             }
@@ -273,7 +290,13 @@ glam_vector!(Vec2, {
     /// shuffle of their own, compared with `[rest offset, limit, rest speed, limit]`, and the
     /// four outcomes read as one bit of a constant (shorter than the shared test).
     #[inline]
-    fn steps_on(offset: Vec2, velocity: Vec2, rest_squared: (f32, f32), limit: f32) -> bool {
+    fn steps_on(
+        offset: Vec2,
+        velocity: Vec2,
+        rest_squared: (f32, f32),
+        limit: f32,
+        _: FastPath,
+    ) -> bool {
         let state = offset.extend(velocity.x).extend(velocity.y);
         let squares = state * state;
         // [|offset|², |offset|², |velocity|², |velocity|²] (x + y and y + x: the same bits).
@@ -290,11 +313,19 @@ glam_vector!(Vec2, {
     /// [`paired`](paired_increments) step, the same products and sums as two `Vec2`s', in a
     /// third of the instructions.
     #[inline]
-    fn step_increments(offset: Vec2, velocity: Vec2, increments: Vec4) -> (Vec2, Vec2) {
-        Self::step_paired_increments(offset, velocity, paired_increments(increments))
+    fn step_increments(
+        offset: Vec2,
+        velocity: Vec2,
+        increments: Vec4,
+        _: FastPath,
+    ) -> (Vec2, Vec2) {
+        Self::step_paired_increments(offset, velocity, paired_increments(increments), FastPath)
     }
 
-    const PAIRED_INCREMENTS: bool = true;
+    #[inline]
+    fn paired_increments(_: FastPath) -> bool {
+        true
+    }
 
     /// `[d00, d00, d11, d11]` times `[offset, velocity]`, plus `[d10, d10, d01, d01]` times
     /// it with the product's halves swapped: the same products and sums as
@@ -306,6 +337,7 @@ glam_vector!(Vec2, {
         offset: Vec2,
         velocity: Vec2,
         [diagonal, cross]: [Vec4; 2],
+        _: FastPath,
     ) -> (Vec2, Vec2) {
         let state = offset.extend(velocity.x).extend(velocity.y);
         let sums = diagonal * state + (cross * state).zwxy();
@@ -317,7 +349,13 @@ glam_vector!(Vec3A, {
     /// `[z, z', ·, ·]`) and summed in the order of `Vec3A::length_squared`: `x + y` in lanes 0
     /// and 1 and `y + x`, the same bits, in lanes 2 and 3, so that no shuffle copies them.
     #[inline]
-    fn steps_on(offset: Vec3A, velocity: Vec3A, rest_squared: (f32, f32), limit: f32) -> bool {
+    fn steps_on(
+        offset: Vec3A,
+        velocity: Vec3A,
+        rest_squared: (f32, f32),
+        limit: f32,
+        _: FastPath,
+    ) -> bool {
         let (offset, velocity) = (offset * offset, velocity * velocity);
         let xy = Vec4::new(offset.x, velocity.x, offset.y, velocity.y);
         let z = Vec4::new(offset.z, velocity.z, offset.z, velocity.z);
@@ -329,7 +367,13 @@ glam_vector!(Vec4, {
     /// `[z, z', w, w']`) and summed in the order of `Vec4::length_squared` (lanes 2 and 3 with
     /// the last sum's terms swapped: the same bits).
     #[inline]
-    fn steps_on(offset: Vec4, velocity: Vec4, rest_squared: (f32, f32), limit: f32) -> bool {
+    fn steps_on(
+        offset: Vec4,
+        velocity: Vec4,
+        rest_squared: (f32, f32),
+        limit: f32,
+        _: FastPath,
+    ) -> bool {
         let (offset, velocity) = (offset * offset, velocity * velocity);
         let xy = Vec4::new(offset.x, velocity.x, offset.y, velocity.y);
         let zw = Vec4::new(offset.z, velocity.z, offset.w, velocity.w);
@@ -380,7 +424,9 @@ fn steps_on_by_lengths(lengths: Vec4, rest_squared: (f32, f32), limit: f32) -> b
 mod tests {
     use bevy::math::{Vec2, Vec3A, Vec4};
 
-    use super::{SpringVector, paired_increments, step_increments_by_parts, stop_at_zero};
+    use super::{
+        FastPath, SpringVector, paired_increments, step_increments_by_parts, stop_at_zero,
+    };
 
     /// What the fast path's examples said: moving and in range steps on; at rest, out of
     /// range or NaN does not; the increments multiply as the matrix says; the paired form gives
@@ -392,29 +438,38 @@ mod tests {
             Vec2::new(3.0, 4.0),
             Vec2::ZERO,
             rest,
-            1.0e30
+            1.0e30,
+            FastPath
         ));
         assert!(!Vec2::steps_on(
             Vec2::splat(0.001),
             Vec2::splat(0.01),
             rest,
-            1.0e30
+            1.0e30,
+            FastPath
         ));
-        assert!(!Vec2::steps_on(Vec2::new(3.0, 4.0), Vec2::ZERO, rest, 24.0));
+        assert!(!Vec2::steps_on(
+            Vec2::new(3.0, 4.0),
+            Vec2::ZERO,
+            rest,
+            24.0,
+            FastPath
+        ));
         assert!(!Vec2::steps_on(
             Vec2::new(f32::NAN, 0.0),
             Vec2::ZERO,
             rest,
-            1.0e30
+            1.0e30,
+            FastPath
         ));
         let increments = Vec4::new(-0.5, 0.25, -2.0, -0.125);
-        let (moved, accelerated) = Vec2::step_increments(Vec2::X, Vec2::Y, increments);
+        let (moved, accelerated) = Vec2::step_increments(Vec2::X, Vec2::Y, increments, FastPath);
         assert_eq!(moved, Vec2::new(-0.5, 0.25));
         assert_eq!(accelerated, Vec2::new(-2.0, -0.125));
         let (offset, velocity) = (Vec2::new(1.0, 3.0), Vec2::new(-2.0, 0.5));
         assert_eq!(
-            Vec2::step_paired_increments(offset, velocity, paired_increments(increments)),
-            Vec2::step_increments(offset, velocity, increments),
+            Vec2::step_paired_increments(offset, velocity, paired_increments(increments), FastPath),
+            Vec2::step_increments(offset, velocity, increments, FastPath),
         );
         let [diagonal, cross] = paired_increments(Vec4::new(1.0, 2.0, 3.0, 4.0));
         assert_eq!(diagonal, Vec4::new(1.0, 1.0, 4.0, 4.0));
@@ -460,7 +515,7 @@ mod tests {
             for &velocity in vectors {
                 for rest in rests {
                     for limit in limits {
-                        let packed = V::steps_on(offset, velocity, rest, limit);
+                        let packed = V::steps_on(offset, velocity, rest, limit, FastPath);
                         let by_norms = super::steps_on_by_norms(offset, velocity, rest, limit);
                         assert_eq!(
                             packed, by_norms,
@@ -516,9 +571,9 @@ mod tests {
             for velocity in edge_vectors() {
                 for increments in increments {
                     let by_parts = step_increments_by_parts(offset, velocity, increments);
-                    let packed = Vec2::step_increments(offset, velocity, increments);
+                    let packed = Vec2::step_increments(offset, velocity, increments, FastPath);
                     let pairs = paired_increments(increments);
-                    let paired = Vec2::step_paired_increments(offset, velocity, pairs);
+                    let paired = Vec2::step_paired_increments(offset, velocity, pairs, FastPath);
                     for (packed, by_parts) in [
                         (packed.0, by_parts.0),
                         (packed.1, by_parts.1),
@@ -618,16 +673,16 @@ mod tests {
                     let (was, is) = (target + before, target + after);
                     if was.is_finite() && is.is_finite() {
                         let keeps = was * is > 0.0;
-                        assert_eq!(f32::keeps_sign(target, before, after), keeps);
+                        assert_eq!(f32::keeps_sign(target, before, after, FastPath), keeps);
                         let lanes = |x: f32| [x, 1.0, x, 1.0];
                         let [c, b, a] = [lanes(target), lanes(before), lanes(after)];
-                        assert_eq!(Vec2::keeps_sign(two(c), two(b), two(a)), keeps);
+                        assert_eq!(Vec2::keeps_sign(two(c), two(b), two(a), FastPath), keeps);
                         assert_eq!(
-                            Vec3A::keeps_sign(three(c), three(b), three(a)),
+                            Vec3A::keeps_sign(three(c), three(b), three(a), FastPath),
                             keeps,
                             "{target} {before} {after}"
                         );
-                        assert_eq!(Vec4::keeps_sign(four(c), four(b), four(a)), keeps);
+                        assert_eq!(Vec4::keeps_sign(four(c), four(b), four(a), FastPath), keeps);
                         keeps_checked += 1;
                     }
                     checked += 1;

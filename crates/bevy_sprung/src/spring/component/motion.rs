@@ -9,6 +9,7 @@ use sprung::RestThreshold;
 
 use super::ticket::SlotTicket;
 use crate::property::{OffsetOf, SpringProperty, ValueOf, VelocityOf};
+use crate::space::FastPath;
 use crate::space::{Carried, SpringSpace};
 
 /// The motion of the spring on property `P`: its velocity, and the state it carries from frame
@@ -115,9 +116,9 @@ impl<P: SpringProperty> SpringMotion<P> {
         if self.offset.offset == zero && self.offset.remainder == zero {
             // Snapped: the target itself was written (not `at_offset(target, 0)`, which a
             // space may clamp or re-encode).
-            P::Space::same(current, self.active_target)
+            P::Space::same(current, self.active_target, FastPath)
         } else {
-            P::Space::is_written(current, self.active_target, self.offset)
+            P::Space::is_written(current, self.active_target, self.offset, FastPath)
         }
     }
 

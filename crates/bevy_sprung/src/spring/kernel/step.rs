@@ -15,6 +15,7 @@ use super::cache::TransitionCache;
 use super::table::{PreparedIncrements, SlotIncrements, TransitionTable};
 use crate::clock::FrameSteps;
 use crate::property::{OffsetOf, SpringProperty, ValueOf};
+use crate::space::FastPath;
 use crate::space::{Carried, SpringSpace, SpringVector};
 use crate::spring::component::rest_squared;
 use crate::spring::component::{PropertySpring, SpringMotion};
@@ -248,10 +249,10 @@ impl<P: SpringProperty> SpringMotion<P> {
         // A value written by something else since (rare) is stepped the general way: here
         // the offset is always the carried one, and its sum with the target is shared with
         // the step's own. A space whose step may be declined after it tests this then too, in
-        // the same branch (`SpringSpace::CONSTRAINS_USUAL_STEP`). Where the change tick
+        // the same branch (`SpringSpace::constrains_usual_step`). Where the change tick
         // already says that nothing else wrote it, the test is left out.
-        let written = unwritten || P::Space::is_written(current, target, before);
-        let (written_now, written_after) = if P::Space::CONSTRAINS_USUAL_STEP {
+        let written = unwritten || P::Space::is_written(current, target, before, FastPath);
+        let (written_now, written_after) = if P::Space::constrains_usual_step(FastPath) {
             (true, written)
         } else {
             (written, true)
@@ -261,18 +262,18 @@ impl<P: SpringProperty> SpringMotion<P> {
         // result). A spring settles the frame after its state came within
         // its tolerances. Within the table's limit (a NaN is not), the step's result is finite
         // and of finite squared length: it needs no test of its own.
-        if !(written_now & SpringVector::steps_on(y, v, self.rest_squared, limit)) {
+        if !(written_now & SpringVector::steps_on(y, v, self.rest_squared, limit, FastPath)) {
             return UsualStep::Declined;
         }
         let (after, velocity) = step_by_increments(before, v, increments);
-        let constrained = P::Space::constrain_usual(target, y, after, velocity);
+        let constrained = P::Space::constrain_usual(target, y, after, velocity, FastPath);
         let (Some((after, velocity)), true) = (constrained, written_after) else {
             return UsualStep::Declined;
         };
         self.offset = after;
         self.velocity = velocity;
         let value = P::Space::at_carried(target, after);
-        if P::Space::same(value, current) {
+        if P::Space::same(value, current, FastPath) {
             UsualStep::Still
         } else {
             UsualStep::Moved(value)
@@ -342,7 +343,7 @@ impl<P: SpringProperty> SpringMotion<P> {
             };
             return Frame {
                 outcome,
-                write: (!P::Space::same(target, current)).then_some(target),
+                write: (!P::Space::same(target, current, FastPath)).then_some(target),
             };
         }
         let spring = config.spring;
@@ -429,12 +430,13 @@ impl<P: SpringProperty> SpringMotion<P> {
         // A property something made invalid (a NaN written into a `Transform`) is overwritten
         // from the spring's own state.
         let carried = self.offset;
-        let mut offset =
-            if !P::Space::is_valid(current) || P::Space::is_written(current, active, carried) {
-                carried
-            } else {
-                P::Space::carried_offset(current, active)
-            };
+        let mut offset = if !P::Space::is_valid(current)
+            || P::Space::is_written(current, active, carried, FastPath)
+        {
+            carried
+        } else {
+            P::Space::carried_offset(current, active)
+        };
         if !P::Space::is_valid(current) {
             warn_once!(
                 "bevy_sprung: a sprung property is not finite ({current:?}); the spring restores it"

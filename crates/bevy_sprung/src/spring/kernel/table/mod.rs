@@ -16,6 +16,7 @@ use slot::{Key, Slot};
 
 use super::parallel::{SplitRows, scope_threads, split_over_threads};
 use crate::clock::FrameSteps;
+use crate::space::FastPath;
 use crate::space::{SpringVector, paired_increments};
 
 /// The slots of every distinct `(spring, clock)` of one property, kept by its stepping system
@@ -43,7 +44,7 @@ pub(crate) struct TransitionTable {
     /// multiple of four.
     increments: Vec<Vec4>,
     /// Whether the table is for a vector that reads its increments in pairs
-    /// ([`SpringVector::PAIRED_INCREMENTS`]).
+    /// ([`SpringVector::paired_increments`]).
     pairs: bool,
     /// Where `pairs`: each slot's increments as [`paired_increments`] makes them (32 bytes, all
     /// the step reads then), by the same index; empty otherwise.
@@ -85,7 +86,7 @@ pub(crate) struct PreparedIncrements<'a> {
 
 /// A slot's increments as the usual step of a `V` reads them: `[d00, d01, d10, d11]`, or the
 /// pairs of [`paired_increments`] for a vector that reads them so
-/// ([`SpringVector::PAIRED_INCREMENTS`]).
+/// ([`SpringVector::paired_increments`]).
 #[derive(Clone, Copy)]
 pub(crate) struct SlotIncrements<V>([Vec4; 2], PhantomData<V>);
 
@@ -93,7 +94,7 @@ impl<V: SpringVector> SlotIncrements<V> {
     /// A transition's `increments` `[d00, d01, d10, d11]`, as `V` reads them.
     #[inline]
     pub(crate) fn of(increments: Vec4) -> Self {
-        let read = if V::PAIRED_INCREMENTS {
+        let read = if V::paired_increments(FastPath) {
             paired_increments(increments)
         } else {
             [increments, Vec4::ZERO]
@@ -105,10 +106,10 @@ impl<V: SpringVector> SlotIncrements<V> {
     /// [`SpringVector::step_increments`]).
     #[inline]
     pub(crate) fn step(self, offset: V, velocity: V) -> (V, V) {
-        if V::PAIRED_INCREMENTS {
-            V::step_paired_increments(offset, velocity, self.0)
+        if V::paired_increments(FastPath) {
+            V::step_paired_increments(offset, velocity, self.0, FastPath)
         } else {
-            V::step_increments(offset, velocity, self.0[0])
+            V::step_increments(offset, velocity, self.0[0], FastPath)
         }
     }
 }
@@ -121,7 +122,7 @@ impl PreparedIncrements<'_> {
         // The padding past the last slot holds no ticket's increments, but reading it is
         // harmless: a ticket past the last slot was never handed out.
         let index = usize::try_from(ticket.wrapping_sub(self.first)).ok()?;
-        if V::PAIRED_INCREMENTS {
+        if V::paired_increments(FastPath) {
             // Empty unless the table was prepared for such a vector (then declined: the
             // general step).
             let pairs = self.paired.get(index)?;
@@ -235,9 +236,9 @@ impl TransitionTable {
     }
 
     /// [`prepare`](Self::prepare) for the springs of a property whose offsets are `V`s: with
-    /// the increments also in pairs if `V` reads them so ([`SpringVector::PAIRED_INCREMENTS`]).
+    /// the increments also in pairs if `V` reads them so ([`SpringVector::paired_increments`]).
     pub(crate) fn prepare_for<V: SpringVector>(&mut self, steps: FrameSteps) {
-        self.pairs = V::PAIRED_INCREMENTS;
+        self.pairs = V::paired_increments(FastPath);
         self.prepare(steps);
     }
 
