@@ -16,7 +16,6 @@
 //! cargo run --example creature
 //! ```
 
-use bevy::input::mouse::MouseMotion;
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 use bevy_sprung::chain::SpringChain;
@@ -24,6 +23,11 @@ use bevy_sprung::inertia::{DragBounds, Inertia};
 use bevy_sprung::juice::Conserve;
 use bevy_sprung::layers::{LayerSpring, SpringLayerPlugin};
 use bevy_sprung::prelude::*;
+
+#[path = "support/tour.rs"]
+mod tour;
+
+use tour::{Tour, TourPlugin};
 
 /// The layers the creature's scale and rotation carry besides its squash.
 #[derive(TypePath)]
@@ -38,13 +42,16 @@ struct Creature;
 #[derive(Resource, Default)]
 struct Cursor {
     at: Vec2,
-    mouse: bool,
     coasting_until: f32,
 }
 
 fn main() {
     App::new()
-        .add_plugins((DefaultPlugins, SpringPlugins::default()))
+        .add_plugins((
+            DefaultPlugins,
+            SpringPlugins::default(),
+            TourPlugin::default(),
+        ))
         .add_plugins((
             SpringLayerPlugin::<Scale, Hover>::default(),
             SpringLayerPlugin::<Scale, Punch>::default(),
@@ -145,31 +152,27 @@ fn spawn(mut commands: Commands) {
     }
 }
 
-/// The mouse once it has moved (a virtual X server has a pointer that never does); until then
-/// the tour: loops, then a rest on the creature.
+/// The tour's cursor (loops, then a rest on the creature) while it runs; then the mouse's.
 fn read_cursor(
-    time: Res<Time>,
-    mut moved: MessageReader<MouseMotion>,
+    tour: Res<Tour>,
     window: Single<&Window, With<PrimaryWindow>>,
     camera: Single<(&Camera, &GlobalTransform)>,
     mut cursor: ResMut<Cursor>,
 ) {
-    cursor.mouse |= moved.read().count() > 0;
+    if let Some(t) = tour.time() {
+        cursor.at = if t < 3.0 {
+            Vec2::new((t * 2.1).sin() * 380.0, (t * 4.2).sin() * 170.0)
+        } else {
+            Vec2::new(-250.0, 120.0)
+        };
+        return;
+    }
     let (camera, placed) = *camera;
-    let mouse = window
+    if let Some(at) = window
         .cursor_position()
-        .and_then(|at| camera.viewport_to_world_2d(placed, at).ok());
-    match mouse {
-        Some(at) if cursor.mouse => cursor.at = at,
-        _ if cursor.mouse => {}
-        _ => {
-            let t = time.elapsed_secs();
-            cursor.at = if t < 3.0 {
-                Vec2::new((t * 2.1).sin() * 380.0, (t * 4.2).sin() * 170.0)
-            } else {
-                Vec2::new(-250.0, 120.0)
-            };
-        }
+        .and_then(|at| camera.viewport_to_world_2d(placed, at).ok())
+    {
+        cursor.at = at;
     }
 }
 
@@ -199,7 +202,7 @@ fn hover(
 fn punch(
     time: Res<Time>,
     keys: Res<ButtonInput<KeyCode>>,
-    cursor: Res<Cursor>,
+    tour: Res<Tour>,
     mut creature: Single<
         (
             &mut LayerSpring<Scale, Punch>,
@@ -208,9 +211,10 @@ fn punch(
         With<Creature>,
     >,
 ) {
-    let t = time.elapsed_secs();
-    let tour = !cursor.mouse && (t % 1.5) < time.delta_secs() && t > 0.5;
-    if keys.just_pressed(KeyCode::Space) || tour {
+    let tour_punch = tour
+        .time()
+        .is_some_and(|t| t > 0.5 && (t % 1.5) < time.delta_secs());
+    if keys.just_pressed(KeyCode::Space) || tour_punch {
         creature.0.punch(Vec3::splat(0.25));
         creature.1.punch(Vec3::new(0.0, 0.0, 0.35));
     }
@@ -220,12 +224,12 @@ fn punch(
 fn fling(
     time: Res<Time>,
     buttons: Res<ButtonInput<MouseButton>>,
+    tour: Res<Tour>,
     mut cursor: ResMut<Cursor>,
     creature: Single<(&Transform, &mut Inertia), With<Creature>>,
 ) {
     let t = time.elapsed_secs();
-    let tour = !cursor.mouse && t >= 3.2 && t - time.delta_secs() < 3.2;
-    if buttons.just_pressed(MouseButton::Right) || tour {
+    if buttons.just_pressed(MouseButton::Right) || tour.passed(3.2) {
         let (transform, mut inertia) = creature.into_inner();
         let toward = (cursor.at - transform.translation.truncate()).normalize_or_zero();
         inertia.fling((toward * 1600.0).extend(0.0));

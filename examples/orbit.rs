@@ -19,6 +19,11 @@ use bevy_sprung::camera::{BlendTrack, RigMotion};
 use bevy_sprung::camera::{CameraBlend, CameraOcclusion, CameraTargets, OrbitRig, VirtualCamera};
 use bevy_sprung::prelude::*;
 
+#[path = "support/tour.rs"]
+mod tour;
+
+use tour::{Tour, TourPlugin};
+
 #[derive(Component)]
 struct Player;
 
@@ -30,10 +35,6 @@ struct Overview;
 
 #[derive(Component)]
 struct Hud;
-
-/// Whether the mouse or keyboard has been used: until then the script plays.
-#[derive(Resource, Default)]
-struct Manual(bool);
 
 fn main() {
     App::new()
@@ -47,13 +48,13 @@ fn main() {
                 ..default()
             }),
             SpringPlugins::default(),
+            TourPlugin::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.55, 0.7, 0.85)))
         .insert_resource(GlobalAmbientLight {
             brightness: 600.0,
             ..default()
         })
-        .init_resource::<Manual>()
         .add_systems(Startup, setup)
         .add_systems(Update, (walk, orbit_input, switch_shot, hud))
         .run();
@@ -144,17 +145,16 @@ fn walk(time: Res<Time>, mut player: Single<&mut Transform, With<Player>>) {
     player.translation = Vec3::new(5.0 * t.cos(), 0.95, 3.0 * (2.0 * t).sin());
 }
 
-/// Mouse drag orbits, the wheel zooms; without input the camera turns slowly on its own.
+/// Mouse drag orbits, the wheel zooms; during the tour the camera turns slowly on its own.
 fn orbit_input(
     time: Res<Time>,
+    tour: Res<Tour>,
     buttons: Res<ButtonInput<MouseButton>>,
     motion: Res<AccumulatedMouseMotion>,
     scroll: Res<AccumulatedMouseScroll>,
-    mut manual: ResMut<Manual>,
     mut orbit: Single<&mut OrbitRig, With<OrbitShot>>,
 ) {
-    manual.0 |= buttons.get_just_pressed().next().is_some() || scroll.delta != Vec2::ZERO;
-    if !manual.0 {
+    if tour.is_running() {
         orbit.rotate(Vec2::new(0.5 * time.delta_secs(), 0.0));
         return;
     }
@@ -166,23 +166,17 @@ fn orbit_input(
     }
 }
 
-/// Tab (or the script: from 3.5 s to 5.5 s) raises the overview above the orbit.
+/// Tab (or the tour: from 3.5 s to 5.5 s) raises the overview above the orbit.
 fn switch_shot(
-    time: Res<Time>,
+    tour: Res<Tour>,
     keys: Res<ButtonInput<KeyCode>>,
-    mut manual: ResMut<Manual>,
     mut overview: Single<&mut VirtualCamera, With<Overview>>,
 ) {
-    manual.0 |= keys.get_just_pressed().next().is_some();
-    let wanted = if manual.0 {
-        if keys.just_pressed(KeyCode::Tab) {
-            2 - overview.priority
-        } else {
-            overview.priority
-        }
-    } else {
-        let t = time.elapsed_secs();
-        if (3.5..5.5).contains(&t) { 2 } else { 0 }
+    let wanted = match tour.time() {
+        Some(t) if (3.5..5.5).contains(&t) => 2,
+        Some(_) => 0,
+        None if keys.just_pressed(KeyCode::Tab) => 2 - overview.priority,
+        None => overview.priority,
     };
     if overview.priority != wanted {
         overview.priority = wanted;
@@ -193,7 +187,7 @@ fn hud(
     mut text: Single<&mut Text, With<Hud>>,
     orbit: Single<(Entity, &RigMotion), With<OrbitShot>>,
     blend: Single<&BlendTrack>,
-    manual: Res<Manual>,
+    tour: Res<Tour>,
 ) {
     let (orbit_shot, motion) = *orbit;
     let shot = if blend.shot() == Some(orbit_shot) {
@@ -204,10 +198,10 @@ fn hud(
     let clearance = motion.clearance();
     text.0 = format!(
         "{}\nshot: {shot} (Tab)\nyaw {:.2} rad  pitch {:.2} rad  distance {:.1}\nclearance {:.1} %{}",
-        if manual.0 {
-            "drag to orbit, scroll to zoom"
+        if tour.is_running() {
+            "scripted tour (move the mouse or press a key)"
         } else {
-            "scripted tour (drag or press a key)"
+            "drag to orbit, scroll to zoom"
         },
         motion.orbit().x,
         motion.orbit().y,
