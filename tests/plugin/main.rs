@@ -20,6 +20,7 @@ mod clocks;
 mod disabling;
 mod first_hour;
 mod follow;
+mod forecast;
 mod implicit;
 mod inertia;
 mod interaction;

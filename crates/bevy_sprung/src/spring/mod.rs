@@ -20,7 +20,7 @@ mod skip;
 mod systems;
 
 pub use component::target_mut::SpringTargetMut;
-pub use component::{PropertySpring, SpringAsleep, SpringInputError, SpringMotion};
+pub use component::{PropertySpring, SpringAsleep, SpringForecast, SpringInputError, SpringMotion};
 pub use event::{SpringSettled, SpringWoke};
 pub use plugin::{SpringPropertyStepPlugin, SpringSchedulePlugin};
 pub use preference::{KeepMotion, ReducedMotion};
