@@ -52,7 +52,10 @@ fn in_flight(fps: u32, spring: Spring, frames: u32) -> (App, Entity) {
     for _ in 0..=frames {
         app.update();
     }
-    let mut spring = app.world_mut().get_mut::<TranslationSpring>(entity).unwrap();
+    let mut spring = app
+        .world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap();
     spring.set_target(TO);
     spring.add_impulse(Vec3::new(500.0, -250.0, 0.0));
     (app, entity)
@@ -183,7 +186,10 @@ fn a_spring_that_never_settles_has_no_settle_time() {
     app.update();
     assert_eq!(forecast(&app, entity).settle_time(), None);
     // A moving target: followed, never reached.
-    let mut spring = app.world_mut().get_mut::<TranslationSpring>(entity).unwrap();
+    let mut spring = app
+        .world_mut()
+        .get_mut::<TranslationSpring>(entity)
+        .unwrap();
     spring.set_spring(Spring::snappy());
     spring.set_target_velocity(Vec3::X * 100.0);
     let ahead = forecast(&app, entity);
@@ -198,4 +204,3 @@ fn a_spring_that_never_settles_has_no_settle_time() {
         "{later} against {moved} less a lag of {lag}"
     );
 }
-

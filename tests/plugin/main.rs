@@ -17,6 +17,7 @@ mod chain;
 mod chaos;
 mod choreography;
 mod clocks;
+mod debug;
 mod disabling;
 mod first_hour;
 mod follow;

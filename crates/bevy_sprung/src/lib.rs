@@ -97,6 +97,8 @@ pub mod clock;
 pub mod color;
 #[cfg(feature = "curve")]
 pub mod curve;
+#[cfg(feature = "debug")]
+pub mod debug;
 pub mod follow;
 pub mod implicit;
 pub mod inertia;

@@ -5,6 +5,8 @@ use alloc::vec::Vec;
 use bevy::ecs::lifecycle::HookContext;
 use bevy::ecs::world::DeferredWorld;
 use bevy::prelude::*;
+
+use super::framing::CameraFraming;
 use sprung::Spring;
 
 use crate::follow::{FixedSamples, TargetMotion};
@@ -64,6 +66,7 @@ use crate::spring::{PropertySpring, SpringTargetMut};
 #[require(
     Transform,
     CameraGoal,
+    CameraFraming,
     RigMotion,
     RigTracking,
     RigHorizontalSpring = PropertySpring::new(Spring::smooth(), Vec2::ZERO),

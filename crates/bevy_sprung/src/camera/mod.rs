@@ -9,6 +9,7 @@
 
 mod blend;
 mod components;
+mod framing;
 #[cfg(feature = "camera_occlusion")]
 mod occlusion;
 mod systems;
@@ -30,6 +31,7 @@ pub use components::{
 };
 #[cfg(feature = "camera_occlusion")]
 pub use components::{RigClearance, RigClearanceSpring};
+pub use framing::CameraFraming;
 #[cfg(feature = "camera_occlusion")]
 pub use occlusion::CameraOcclusion;
 
@@ -89,6 +91,7 @@ impl Plugin for SpringCameraPlugin {
         .register_type::<GroupFraming>()
         .register_type::<OrbitRig>()
         .register_type::<RigMotion>()
+        .register_type::<CameraFraming>()
         .add_observer(systems::note_warps);
         // Targets that move in `FixedUpdate` are sampled after each fixed step.
         add_systems_on_first_use(

@@ -11,6 +11,7 @@ use super::components::{
     LookAhead, OrbitRig, RigHorizontalSpring, RigLookAheadSpring, RigMotion, RigOrbitSpring,
     RigTracking, RigVerticalSpring, RigZoomSpring, ScreenPosition, orbit_rotation,
 };
+use super::framing::CameraFraming;
 use super::view::{centre_range, ease_into, goal_range, view_area, viewport_size};
 use crate::clock::SpringTime;
 use crate::follow::{FixedSamples, TargetMotion, fixed_sample};
@@ -254,6 +255,7 @@ pub(super) struct Framed {
     transform: Option<&'static Transform>,
     motion: &'static mut RigMotion,
     tracking: &'static mut RigTracking,
+    framing: &'static mut CameraFraming,
     horizontal: &'static mut RigHorizontalSpring,
     vertical: &'static mut RigVerticalSpring,
     dead_zone: Option<&'static DeadZone>,
@@ -295,10 +297,12 @@ pub(super) fn frame_goals(
 
         // The dead zone holds the goal until the point leaves the zone around it: the goal is
         // dragged along by the zone's edge (a backlash, the same for any frame rate).
+        let half = rig.dead_zone.map_or(Vec3::ZERO, |zone| {
+            let half = zone.half_size(half_view);
+            Vec3::new(half.x, half.y, half.x)
+        });
         let held = match rig.dead_zone {
-            Some(zone) => {
-                let half = zone.half_size(half_view);
-                let half = Vec3::new(half.x, half.y, half.x);
+            Some(_) => {
                 let held = rig.tracking.held.unwrap_or(point);
                 held.clamp(point - half, point + half)
             }
@@ -329,6 +333,14 @@ pub(super) fn frame_goals(
             rig.hold_goal();
             continue;
         }
+        *rig.framing = CameraFraming {
+            goal: rig.goal.point,
+            point,
+            held,
+            dead_zone: half,
+            half_view,
+            centre,
+        };
 
         let dt = steps.dt(rig.horizontal.clock());
         let carried = core::mem::take(&mut rig.tracking.warped);

@@ -239,6 +239,24 @@ impl SpringChain {
     pub fn is_resting(&self) -> bool {
         self.state.resting
     }
+
+    /// The chain's bones as of its last step, root to leaf: each joint, where the pose it
+    /// is given puts its bone's tip, and where the spring holds the tip (both in the world).
+    /// Nothing before the chain's first step.
+    pub fn bones(&self) -> impl Iterator<Item = ChainBone> + '_ {
+        self.state.bones()
+    }
+}
+
+/// One bone of a [`SpringChain`] as of its last step (see [`SpringChain::bones`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChainBone {
+    /// The joint the bone turns.
+    pub joint: Entity,
+    /// Where the joint's rest pose (the pose animation or your code gives it) puts the tip.
+    pub rest_tip: Vec3,
+    /// Where the tip's spring holds it: the bone points from the joint to here.
+    pub tip: Vec3,
 }
 
 /// The exact step of one tip: the transition of its spring for the frame's `dt`, kept while

@@ -8,7 +8,7 @@ use sprung::{Spring, SpringState};
 
 use super::collider::PlacedCollider;
 use super::pose::Pose;
-use super::{CachedTransition, ChainCollider, ChainJoint, Reshaped, SpringChain};
+use super::{CachedTransition, ChainBone, ChainCollider, ChainJoint, Reshaped, SpringChain};
 use crate::clock::SpringTime;
 
 /// Passes over a chain's colliders per bone: a capsule's nearest point moves as the end turns.
@@ -41,6 +41,21 @@ pub(super) struct ChainState {
     /// The world pose of the chain's parent, and the first joint's position, last frame.
     last_parent: Option<Transform>,
     last_root: Option<Vec3>,
+}
+
+impl ChainState {
+    /// Each joint's bone as of the last step (joints without a bone, or not stepped yet, have
+    /// none).
+    pub(super) fn bones(&self) -> impl Iterator<Item = ChainBone> + '_ {
+        self.joints.iter().filter_map(|joint| {
+            let rest_tip = joint.rest_tip?;
+            Some(ChainBone {
+                joint: joint.entity,
+                rest_tip: rest_tip.into(),
+                tip: (rest_tip + joint.offset).into(),
+            })
+        })
+    }
 }
 
 /// Whether a chain steps this frame.

@@ -1,0 +1,313 @@
+//! The debug overlay: what it draws is what the springs then do (the predicted path is the
+//! path taken), a group that is hidden draws nothing until shown, the camera's guides and the
+//! chains' bones are drawn where they act, and the world changing underneath breaks nothing.
+
+use bevy::asset::AssetPlugin;
+use bevy::camera::{OrthographicProjection, Projection};
+use bevy::gizmos::config::{GizmoConfigGroup, GizmoConfigStore};
+use bevy::gizmos::{GizmoAsset, GizmoHandles};
+use bevy::input::ButtonState;
+use bevy::input::InputPlugin;
+use bevy::input::keyboard::{Key, KeyboardInput};
+use bevy::prelude::*;
+use bevy::window::{PrimaryWindow, WindowResolution};
+use bevy_sprung::camera::{CameraFraming, CameraTargets, Confiner, DeadZone};
+use bevy_sprung::chain::SpringChain;
+use bevy_sprung::debug::{CameraRigGizmos, ChainGizmos, SpringDebugPlugin, SpringGizmos};
+use bevy_sprung::prelude::*;
+use bevy_sprung::spring::SpringMotion;
+
+use crate::harness::app;
+
+/// A headless app at `fps` with the overlay (and what gizmos need: assets, input).
+fn overlay_app(fps: u32, overlay: SpringDebugPlugin) -> App {
+    let mut app = app(fps);
+    app.add_plugins((AssetPlugin::default(), InputPlugin))
+        // Bevy's gizmos draw skinned meshes' bounds: they need the mesh assets.
+        .init_asset::<Mesh>()
+        .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>()
+        .add_plugins(overlay);
+    app
+}
+
+/// The line strips group `G` drew this frame, split at their separators.
+fn strips<G: GizmoConfigGroup>(app: &App) -> Vec<Vec<Vec3>> {
+    let Some(buffer) = drawn::<G>(app) else {
+        return Vec::new();
+    };
+    buffer
+        .strip_positions
+        .split(|point| point.is_nan())
+        .filter(|strip| !strip.is_empty())
+        .map(<[Vec3]>::to_vec)
+        .collect()
+}
+
+/// The segments' end points group `G` drew this frame.
+fn list_points<G: GizmoConfigGroup>(app: &App) -> Vec<Vec3> {
+    drawn::<G>(app)
+        .map(|buffer| buffer.list_positions.clone())
+        .unwrap_or_default()
+}
+
+/// What group `G` drew this frame, if anything.
+fn drawn<G: GizmoConfigGroup>(
+    app: &App,
+) -> Option<bevy::gizmos::gizmos::GizmoBuffer<bevy::gizmos::config::ErasedGizmoConfigGroup, ()>> {
+    let handles = app.world().resource::<GizmoHandles>();
+    let handle = handles
+        .handles()
+        .get(&core::any::TypeId::of::<G>())?
+        .as_ref()?;
+    let asset = app.world().resource::<Assets<GizmoAsset>>().get(handle)?;
+    Some(asset.buffer().clone())
+}
+
+/// A spring in flight under a moved, scaled parent: pixels far from the origin.
+fn spring_in_flight(app: &mut App) -> (Entity, Entity) {
+    let world = app.world_mut();
+    let parent = world
+        .spawn(Transform::from_xyz(1500.0, -400.0, 0.0).with_scale(Vec3::splat(2.0)))
+        .id();
+    let spring = world
+        .spawn((
+            Transform::from_xyz(0.0, 0.0, 0.0),
+            TranslationSpring::new(Spring::bouncy(), Vec3::new(300.0, 120.0, 0.0))
+                .with_velocity(Vec3::new(-400.0, 900.0, 0.0)),
+            ChildOf(parent),
+        ))
+        .id();
+    (parent, spring)
+}
+
+#[test]
+fn the_drawn_path_is_the_path_the_spring_then_takes() {
+    for fps in [30, 60, 144, 240] {
+        let mut app = overlay_app(fps, SpringDebugPlugin::default());
+        // The path sampled at this app's frames.
+        app.world_mut()
+            .resource_mut::<GizmoConfigStore>()
+            .config_mut::<SpringGizmos>()
+            .1
+            .path_step = 1.0 / fps as f32;
+        let (_, spring) = spring_in_flight(&mut app);
+        app.update();
+        app.update();
+        // The drawn strip that starts where the spring is now.
+        let here = app
+            .world()
+            .get::<GlobalTransform>(spring)
+            .unwrap()
+            .translation();
+        let path = strips::<SpringGizmos>(&app)
+            .into_iter()
+            .find(|strip| strip[0].distance(here) < 1e-3)
+            .unwrap_or_else(|| panic!("{fps} fps: no path drawn from {here}"));
+        assert!(
+            path.len() > fps as usize / 4,
+            "{fps} fps: a path of {} points",
+            path.len()
+        );
+        // Each later frame puts the spring on the next point drawn (to rounding at ~2000 px).
+        for (frame, &point) in path.iter().enumerate().skip(1) {
+            app.update();
+            let taken = app
+                .world()
+                .get::<GlobalTransform>(spring)
+                .unwrap()
+                .translation();
+            assert!(
+                taken.distance(point) <= 512.0 * f32::EPSILON * 2500.0,
+                "{fps} fps, frame {frame}: drawn {point}, taken {taken}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_settle_label_is_the_forecast_and_a_spring_asleep_is_a_ring() {
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    let (_, spring) = spring_in_flight(&mut app);
+    app.update();
+    app.update();
+    let world = app.world();
+    let forecast = world
+        .get::<TranslationSpring>(spring)
+        .unwrap()
+        .forecast(world.get::<SpringMotion<Translation>>(spring).unwrap());
+    let settle = forecast.settle_time().unwrap();
+    assert!(
+        settle > 0.5,
+        "a bouncy spring in flight settles in {settle} s"
+    );
+    // The label's strokes: more strips than the path and the arrow alone.
+    let awake = strips::<SpringGizmos>(&app).len();
+    assert!(awake > 3, "{awake} strips drawn");
+    // Asleep: one ring where it rests, nothing else.
+    for _ in 0..600 {
+        app.update();
+    }
+    let rest = app
+        .world()
+        .get::<GlobalTransform>(spring)
+        .unwrap()
+        .translation();
+    let drawn = strips::<SpringGizmos>(&app);
+    assert_eq!(drawn.len(), 1, "asleep: {} strips", drawn.len());
+    let ring = &drawn[0];
+    let centre = ring.iter().copied().sum::<Vec3>() / ring.len() as f32;
+    assert!(
+        centre.distance(rest) < 0.5,
+        "a ring around {centre}, the spring at {rest}"
+    );
+}
+
+/// A key press as the window system sends it.
+fn press(app: &mut App, key: KeyCode) {
+    let window = app.world_mut().spawn_empty().id();
+    for state in [ButtonState::Pressed, ButtonState::Released] {
+        app.world_mut().write_message(KeyboardInput {
+            key_code: key,
+            logical_key: Key::Character("d".into()),
+            state,
+            text: None,
+            repeat: false,
+            window,
+        });
+        app.update();
+    }
+}
+
+#[test]
+fn a_hidden_overlay_draws_nothing_until_its_key_shows_it() {
+    let mut app = overlay_app(60, SpringDebugPlugin::hidden().toggled_by(KeyCode::KeyD));
+    spring_in_flight(&mut app);
+    for _ in 0..3 {
+        app.update();
+        assert!(strips::<SpringGizmos>(&app).is_empty());
+    }
+    press(&mut app, KeyCode::KeyD);
+    app.update();
+    assert!(!strips::<SpringGizmos>(&app).is_empty(), "shown by the key");
+    let store = app.world().resource::<GizmoConfigStore>();
+    assert!(store.config::<ChainGizmos>().0.enabled && store.config::<CameraRigGizmos>().0.enabled);
+    press(&mut app, KeyCode::KeyD);
+    app.update();
+    assert!(strips::<SpringGizmos>(&app).is_empty(), "hidden again");
+}
+
+#[test]
+fn the_dead_zone_is_drawn_around_the_held_point() {
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    app.world_mut().spawn((
+        Window {
+            resolution: WindowResolution::new(1280, 720).with_scale_factor_override(1.0),
+            ..default()
+        },
+        PrimaryWindow,
+    ));
+    let player = app
+        .world_mut()
+        .spawn(Transform::from_xyz(100.0, 50.0, 0.0))
+        .id();
+    let camera = app
+        .world_mut()
+        .spawn((
+            Camera2d,
+            Projection::Orthographic(OrthographicProjection::default_2d()),
+            CameraRig::new(Spring::smooth()),
+            CameraTargets::single(player),
+            DeadZone::view(Vec2::new(0.2, 0.3)),
+            Confiner::new(Rect::new(-2000.0, -1000.0, 2000.0, 1000.0)).with_slowing_distance(64.0),
+        ))
+        .id();
+    for frame in 0..30 {
+        app.world_mut()
+            .get_mut::<Transform>(player)
+            .unwrap()
+            .translation
+            .x += 12.0;
+        app.update();
+        let framing = *app.world().get::<CameraFraming>(camera).unwrap();
+        // The zone is a fifth of 1280 wide and 0.3 of 720 high.
+        assert!((framing.dead_zone().truncate() - Vec2::new(128.0, 108.0)).length() < 1e-3);
+        // The player never leaves the zone around the held point.
+        let reach = (framing.point() - framing.held()).abs();
+        assert!(
+            reach.cmple(framing.dead_zone() + 1e-3).all(),
+            "frame {frame}: {reach}"
+        );
+        // The zone's corners are drawn.
+        let corner = framing.held() + framing.dead_zone();
+        let lines = list_points::<CameraRigGizmos>(&app);
+        assert!(
+            lines.iter().any(|point| point.distance(corner) < 1e-3),
+            "frame {frame}: no corner at {corner}"
+        );
+    }
+}
+
+#[test]
+fn chains_draw_their_bones_and_survive_a_despawned_joint() {
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    let world = app.world_mut();
+    let root = world
+        .spawn((
+            Transform::default(),
+            SpringChain::new(Spring::bouncy()).with_gravity(Vec3::NEG_Y * 300.0),
+        ))
+        .id();
+    let mut joints = vec![root];
+    for _ in 0..3 {
+        let joint = world.spawn(Transform::from_xyz(20.0, 0.0, 0.0)).id();
+        world.entity_mut(*joints.last().unwrap()).add_child(joint);
+        joints.push(joint);
+    }
+    for _ in 0..20 {
+        app.update();
+    }
+    let bones: Vec<_> = app
+        .world()
+        .get::<SpringChain>(root)
+        .unwrap()
+        .bones()
+        .collect();
+    assert_eq!(bones.len(), 3, "three joints with a child joint");
+    let lines = list_points::<ChainGizmos>(&app);
+    for bone in &bones {
+        assert!(
+            lines.iter().any(|point| point.distance(bone.tip) < 1e-3),
+            "no bone drawn to {}",
+            bone.tip
+        );
+    }
+    // The world changes underneath: a joint despawned, then the chain's root.
+    app.world_mut().entity_mut(joints[2]).despawn();
+    for _ in 0..5 {
+        app.update();
+    }
+    app.world_mut().entity_mut(root).despawn();
+    for _ in 0..5 {
+        app.update();
+    }
+    assert!(list_points::<ChainGizmos>(&app).is_empty());
+}
+
+#[test]
+fn springs_whose_parent_or_component_goes_away_are_still_drawn_or_dropped() {
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    let (parent, spring) = spring_in_flight(&mut app);
+    app.update();
+    // The parent loses its transform: the spring is drawn in its own space.
+    app.world_mut()
+        .entity_mut(parent)
+        .remove::<(Transform, GlobalTransform)>();
+    app.update();
+    assert!(!strips::<SpringGizmos>(&app).is_empty());
+    // The spring's component removed: nothing to draw.
+    app.world_mut()
+        .entity_mut(spring)
+        .remove::<TranslationSpring>();
+    app.update();
+    assert!(strips::<SpringGizmos>(&app).is_empty());
+}
