@@ -9,6 +9,10 @@
 //! - **Inertia**: a right click flings it toward the cursor; it coasts to a stop exactly
 //!   `v/deceleration` away, inside the window ([`Inertia`]).
 //!
+//! The debug overlay ([`SpringDebugPlugin`]) draws the chains' bones around their rest pose
+//! and the body's spring: its target, velocity, the exact path it will take and the seconds
+//! until it settles. D hides or shows it.
+//!
 //! Without a mouse the example plays a scripted tour (the "cursor" draws loops, hovers, punches
 //! and flings), so CI screenshots show it.
 //!
@@ -16,9 +20,11 @@
 //! cargo run --example creature
 //! ```
 
+use bevy::gizmos::config::GizmoConfigStore;
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 use bevy_sprung::chain::SpringChain;
+use bevy_sprung::debug::{ChainGizmos, SpringDebugPlugin, SpringGizmos};
 use bevy_sprung::inertia::{DragBounds, Inertia};
 use bevy_sprung::juice::Conserve;
 use bevy_sprung::layers::{LayerSpring, SpringLayerPlugin};
@@ -50,6 +56,7 @@ fn main() {
         .add_plugins((
             DefaultPlugins,
             SpringPlugins::default(),
+            SpringDebugPlugin::default().toggled_by(KeyCode::KeyD),
             TourPlugin::default(),
         ))
         .add_plugins((
@@ -59,9 +66,15 @@ fn main() {
         ))
         .insert_resource(ClearColor(Color::srgb(0.10, 0.11, 0.15)))
         .init_resource::<Cursor>()
-        .add_systems(Startup, spawn)
+        .add_systems(Startup, (spawn, overlay_in_pixels))
         .add_systems(Update, (read_cursor, chase, hover, punch, fling).chain())
         .run();
+}
+
+/// The overlay's markers sized for a scene in pixels.
+fn overlay_in_pixels(mut store: ResMut<GizmoConfigStore>) {
+    store.config_mut::<ChainGizmos>().1.size = 3.0;
+    store.config_mut::<SpringGizmos>().1.size = 6.0;
 }
 
 /// A chain of `count` sprites of `size`, each `step` from the last, the first under `parent`.

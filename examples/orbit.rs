@@ -5,18 +5,25 @@
 //! overview shot: the two rigs are [`VirtualCamera`]s and the rendering camera's
 //! [`CameraBlend`] springs from one to the other with its velocity kept.
 //!
+//! D shows the rigs' guides (the debug overlay, [`SpringDebugPlugin`]): the point each shot
+//! frames, the orbit sphere, and the ray occlusion is looked for on (red while a pillar pulls
+//! the camera in).
+//!
 //! Drag with the left mouse button to orbit, scroll to zoom, Tab for the overview. Without
-//! input the camera turns slowly round the player on its own and the overview comes and goes.
+//! input the camera turns slowly round the player on its own, the overview comes and goes, and
+//! the guides are shown for the last part.
 //!
 //! ```text
 //! cargo run --example orbit
 //! ```
 
 use bevy::core_pipeline::tonemapping::Tonemapping;
+use bevy::gizmos::config::GizmoConfigStore;
 use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll};
 use bevy::prelude::*;
 use bevy_sprung::camera::{BlendTrack, RigMotion};
 use bevy_sprung::camera::{CameraBlend, CameraOcclusion, CameraTargets, OrbitRig, VirtualCamera};
+use bevy_sprung::debug::{CameraRigGizmos, SpringDebugPlugin};
 use bevy_sprung::prelude::*;
 
 #[path = "support/tour.rs"]
@@ -48,6 +55,7 @@ fn main() {
                 ..default()
             }),
             SpringPlugins::default(),
+            SpringDebugPlugin::hidden().toggled_by(KeyCode::KeyD),
             TourPlugin::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.55, 0.7, 0.85)))
@@ -55,8 +63,8 @@ fn main() {
             brightness: 600.0,
             ..default()
         })
-        .add_systems(Startup, setup)
-        .add_systems(Update, (walk, orbit_input, switch_shot, hud))
+        .add_systems(Startup, (setup, guides_in_metres))
+        .add_systems(Update, (walk, orbit_input, switch_shot, show_guides, hud))
         .run();
 }
 
@@ -183,6 +191,18 @@ fn switch_shot(
     }
 }
 
+/// The guides' markers sized for a scene in metres.
+fn guides_in_metres(mut store: ResMut<GizmoConfigStore>) {
+    store.config_mut::<CameraRigGizmos>().1.size = 0.15;
+}
+
+/// The tour shows the guides once it is back on the orbit.
+fn show_guides(tour: Res<Tour>, mut store: ResMut<GizmoConfigStore>) {
+    if tour.passed(5.6) {
+        store.config_mut::<CameraRigGizmos>().0.enabled = true;
+    }
+}
+
 fn hud(
     mut text: Single<&mut Text, With<Hud>>,
     orbit: Single<(Entity, &RigMotion), With<OrbitShot>>,
@@ -197,7 +217,7 @@ fn hud(
     };
     let clearance = motion.clearance();
     text.0 = format!(
-        "{}\nshot: {shot} (Tab)\nyaw {:.2} rad  pitch {:.2} rad  distance {:.1}\nclearance {:.1} %{}",
+        "{}\nshot: {shot} (Tab)   D: camera guides\nyaw {:.2} rad  pitch {:.2} rad  distance {:.1}\nclearance {:.1} %{}",
         if tour.is_running() {
             "scripted tour (move the mouse or press a key)"
         } else {

@@ -2,16 +2,21 @@
 //! look-ahead, the player on the lower third, a slower vertical follow that waits while the
 //! player is in the air, and level bounds it never shows past; G frames both players as a group.
 //!
-//! - **Dead zone** (the outlined box): the player moves inside it and the camera does not move
-//!   at all; outside, a spring pulls the camera after it.
+//! - **Dead zone** (the box): the player moves inside it and the camera does not move at all;
+//!   outside, a spring pulls the camera after it.
 //! - **Look-ahead**: the camera leads the player by 0.7 s of its run, smoothed by its own spring,
 //!   so turning round swings the view over instead of snapping it.
 //! - **Confiner**: the level's edges (the dark outside never shows) slow the camera to a stop
 //!   within 120 px, as a spring comes to rest, never with a jerk.
 //! - **Group framing** (G): both players stay in view with a margin; the zoom springs to fit.
 //!
-//! Arrow keys or A/D run, Space jumps. Without input the example plays a scripted run: right
-//! with jumps, back, then group framing.
+//! The camera's guides are the debug overlay's ([`SpringDebugPlugin`]): the dead zone (green,
+//! orange while the player pushes it), the framed point and the look-ahead ahead of it, the
+//! view the camera heads for, and the level's bounds with the band where the camera slows. D
+//! hides or shows them.
+//!
+//! Arrow keys run, Space jumps. Without input the example plays a scripted run: right with
+//! jumps, back, then group framing.
 //!
 //! ```text
 //! cargo run --example platformer
@@ -21,6 +26,7 @@ use bevy::prelude::*;
 use bevy_sprung::camera::{
     CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, ScreenPosition,
 };
+use bevy_sprung::debug::SpringDebugPlugin;
 use bevy_sprung::prelude::*;
 
 /// The level: the camera's view stays inside it.
@@ -57,10 +63,6 @@ struct Friend;
 #[derive(Component)]
 struct Hud;
 
-/// The dead zone's outline.
-#[derive(Component)]
-struct DeadZoneOutline;
-
 /// Whether a key has been pressed: until then the script plays.
 #[derive(Resource, Default)]
 struct Manual(bool);
@@ -77,6 +79,7 @@ fn main() {
                 ..default()
             }),
             SpringPlugins::default(),
+            SpringDebugPlugin::default().toggled_by(KeyCode::KeyD),
         ))
         .insert_resource(ClearColor(Color::srgb(0.08, 0.08, 0.12)))
         .init_resource::<Manual>()
@@ -140,21 +143,6 @@ fn setup(mut commands: Commands) {
         LookAhead::new(0.7),
         Confiner::new(LEVEL).with_slowing_distance(120.0),
     ));
-    // The dead zone, outlined where it is on screen (UI y grows downward).
-    let percent = |fraction: f32| Val::Percent(100.0 * fraction);
-    commands.spawn((
-        DeadZoneOutline,
-        Node {
-            position_type: PositionType::Absolute,
-            left: percent(0.5 + SCREEN.x - DEAD_ZONE.x / 2.0),
-            top: percent(0.5 - SCREEN.y - DEAD_ZONE.y / 2.0),
-            width: percent(DEAD_ZONE.x),
-            height: percent(DEAD_ZONE.y),
-            border: UiRect::all(Val::Px(2.0)),
-            ..default()
-        },
-        BorderColor::all(Color::srgba(1.0, 1.0, 1.0, 0.7)),
-    ));
     commands.spawn((
         Hud,
         Text::new(""),
@@ -193,9 +181,8 @@ fn run(
 ) {
     manual.0 |= keys.get_just_pressed().next().is_some();
     let (direction, jump) = if manual.0 {
-        let key = |codes: [KeyCode; 2]| if keys.any_pressed(codes) { 1.0 } else { 0.0 };
-        let direction =
-            key([KeyCode::ArrowRight, KeyCode::KeyD]) - key([KeyCode::ArrowLeft, KeyCode::KeyA]);
+        let key = |code: KeyCode| if keys.pressed(code) { 1.0 } else { 0.0 };
+        let direction = key(KeyCode::ArrowRight) - key(KeyCode::ArrowLeft);
         (direction, keys.just_pressed(KeyCode::Space))
     } else {
         script(time.elapsed_secs())
@@ -261,14 +248,8 @@ fn toggle_group(
     camera: Single<(Entity, Has<GroupFraming>), With<CameraRig>>,
     player: Single<Entity, With<Player>>,
     friend: Single<Entity, With<Friend>>,
-    mut outline: Single<&mut Visibility, With<DeadZoneOutline>>,
 ) {
     let (camera, grouped) = *camera;
-    **outline = if grouped {
-        Visibility::Inherited
-    } else {
-        Visibility::Hidden
-    };
     if grouped {
         commands
             .entity(camera)
@@ -304,9 +285,9 @@ fn hud(
 ) {
     let (rig, grouped, motion) = *camera;
     text.0 = format!(
-        "{}\nG: group framing ({})\nlook-ahead {:+.0} px   zoom {:.2}   vertical follow {}",
+        "{}\nG: group framing ({})   D: camera guides\nlook-ahead {:+.0} px   zoom {:.2}   vertical follow {}",
         if manual.0 {
-            "Arrows/A-D run, Space jumps"
+            "Arrows run, Space jumps"
         } else {
             "scripted run (press a key to play)"
         },

@@ -16,8 +16,8 @@
 //! - **chains** ([`ChainGizmos`]): each [`SpringChain`](crate::chain::SpringChain)'s joints
 //!   and bones, the rest pose they spring around, and its colliders.
 //!
-//! Each group is a Bevy [`GizmoConfigGroup`] of its own: turn one on or off, or change its
-//! line width, through [`GizmoConfigStore`] (or all at once, with a key:
+//! Each group is a Bevy [`GizmoConfigGroup`] of its own, drawn over the scene: turn one on or
+//! off, change its options or its line width, through [`GizmoConfigStore`] (or all at once, with a key:
 //! [`SpringDebugPlugin::toggled_by`]). A group that is off costs nothing: its system does not
 //! run. Without the plugin nothing of it is built into the app.
 //!
@@ -145,11 +145,14 @@ impl Plugin for SpringDebugPlugin {
     }
 }
 
-/// Registers group `G`, shown or not.
+/// Registers group `G`, shown or not, drawn over the scene (as guides are: a path or a zone
+/// behind a mesh is still seen).
 fn add_group<G: GizmoConfigGroup>(app: &mut App, shown: bool) {
     app.init_gizmo_group::<G>();
     let mut store = app.world_mut().resource_mut::<GizmoConfigStore>();
-    store.config_mut::<G>().0.enabled = shown;
+    let (config, _) = store.config_mut::<G>();
+    config.enabled = shown;
+    config.depth_bias = -1.0;
 }
 
 /// Whether group `G` is shown: a group that is off does not run its system.
