@@ -5,6 +5,7 @@
 //! runs each under callgrind with collection only inside [`measured`] (a few frames of the
 //! animation's schedule, after warm-up frames), and prints instructions per entity per frame
 //! with the ratios the performance goals are stated in. It needs `valgrind` on the `PATH`.
+//! With `--features debug` it also counts the debug overlay (`… -- overlay`: only that).
 //! `… --bench instructions -- one METHOD COUNT FRAMES VARY` runs one scene without callgrind
 //! (what the driver runs under it); `… -- time METHOD COUNT FRAMES VARY [MODE]` times one
 //! scene's frames: its schedule, or with MODE `whole` whole frames, `static` whole frames with
@@ -150,16 +151,51 @@ fn measured_warm_up(app: &mut App, method: Method, vary: bool) {
 /// Frames counted in the empty app.
 const EMPTY_FRAMES: u64 = 100;
 
+/// What the whole-frame app has besides `TransformPlugin`: `false` nothing, `true`
+/// [`SpringPlugins`](bevy_sprung::SpringPlugins); with feature `debug` also: `gizmos` Bevy's
+/// gizmos (what an app the overlay draws in has), `hidden` the debug overlay with every group
+/// off, `shown` with every group on.
+fn empty_setup(app: &mut App, setup: &str) {
+    if setup == "false" {
+        return;
+    }
+    app.add_plugins(bevy_sprung::SpringPlugins::default());
+    if setup == "true" {
+        return;
+    }
+    #[cfg(feature = "debug")]
+    {
+        use bevy_sprung::debug::SpringDebugPlugin;
+        // What Bevy's gizmos need in a headless app.
+        app.add_plugins((
+            bevy::asset::AssetPlugin::default(),
+            bevy::gizmos::GizmoPlugin,
+        ))
+        .init_asset::<Mesh>()
+        .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>();
+        match setup {
+            "gizmos" => {}
+            "hidden" => {
+                app.add_plugins(SpringDebugPlugin::hidden());
+            }
+            "shown" => {
+                app.add_plugins(SpringDebugPlugin::default());
+            }
+            other => panic!("no setup {other}"),
+        }
+    }
+    #[cfg(not(feature = "debug"))]
+    panic!("setup {setup} needs `--features debug`");
+}
+
 /// An app with nothing to spring (`TransformPlugin`, as any app with something to spring has),
-/// with or without [`SpringPlugins`](bevy_sprung::SpringPlugins), or with it and `springs`
-/// translation springs that keep moving, as callgrind runs it.
-fn empty(plugin: bool, springs: usize, frames: u64) {
+/// set up as [`empty_setup`] says, with `springs` translation springs that keep moving, as
+/// callgrind runs it.
+fn empty(setup: &str, springs: usize, frames: u64) {
     use bevy_sprung::prelude::{Spring, TranslationSpring};
     let mut app = App::new();
     app.add_plugins((scenarios::minimal_plugins(), TransformPlugin));
-    if plugin {
-        app.add_plugins(bevy_sprung::SpringPlugins::default());
-    }
+    empty_setup(&mut app, setup);
     for index in 0..springs {
         #[expect(clippy::cast_precision_loss, reason = "a few entities")]
         let target = Vec3::splat(1e4 * (index + 1) as f32);
@@ -229,9 +265,14 @@ fn main() {
         );
         return;
     }
+    #[cfg(feature = "debug")]
+    if args.first().map(String::as_str) == Some("overlay") {
+        overlay_cost();
+        return;
+    }
     if args.first().map(String::as_str) == Some("empty") {
         empty(
-            args[1].parse().expect("true or false"),
+            &args[1],
             args[2].parse().expect("a spring count"),
             args[3].parse().expect("a frame count"),
         );
@@ -296,5 +337,44 @@ fn main() {
          with one moving translation spring {one} ({:+})",
         i128::from(with) - i128::from(without),
         i128::from(one) - i128::from(without)
+    );
+    #[cfg(feature = "debug")]
+    overlay_cost();
+}
+
+/// Springs in whole frames with the debug overlay added, hidden and shown, against an app with
+/// Bevy's gizmos and no overlay: what the overlay costs per frame, and per spring.
+#[cfg(feature = "debug")]
+fn overlay_cost() {
+    const SPRINGS: u64 = 1000;
+    const FRAMES: u64 = 10;
+    let frames = FRAMES.to_string();
+    let frame = |setup: &str, springs: u64| {
+        callgrind(
+            "*instructions::measured_updates",
+            None,
+            &["empty", setup, &springs.to_string(), &frames],
+        ) / FRAMES
+    };
+    let [gizmos, hidden, shown] =
+        ["gizmos", "hidden", "shown"].map(|setup| (frame(setup, 0), frame(setup, SPRINGS)));
+    #[expect(
+        clippy::cast_possible_wrap,
+        reason = "instruction counts far below i64::MAX"
+    )]
+    let extra = |(none, many): (u64, u64)| {
+        let fixed = none as i64 - gizmos.0 as i64;
+        let per_spring = ((many as i64 - none as i64) - (gizmos.1 as i64 - gizmos.0 as i64)) as f64
+            / SPRINGS as f64;
+        (fixed, per_spring)
+    };
+    let (hidden_fixed, hidden_each) = extra(hidden);
+    let (shown_fixed, shown_each) = extra(shown);
+    println!(
+        "\nthe debug overlay, whole frames, instructions, against an app with Bevy's gizmos and \
+         no overlay ({} per frame without springs, {} with {SPRINGS} moving translation \
+         springs):\n  added, every group off: {hidden_fixed:+} per frame, {hidden_each:+.2} per \
+         spring\n  shown: {shown_fixed:+} per frame, {shown_each:+.0} per spring",
+        gizmos.0, gizmos.1
     );
 }
