@@ -235,8 +235,8 @@ fn count(method: Method, vary: bool) -> u64 {
     )
 }
 
-fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+/// Runs the mode `args` name (`one`, `time`, `overlay`, `empty`), if they name one.
+fn run_mode(args: &[String]) -> bool {
     if args.first().map(String::as_str) == Some("one") {
         let method = method_named(&args[1]);
         one(
@@ -245,7 +245,7 @@ fn main() {
             args[3].parse().expect("a frame count"),
             args[4].parse().expect("true or false"),
         );
-        return;
+        return true;
     }
     if args.first().map(String::as_str) == Some("time") {
         let (whole, propagation) = match args.get(5).map(String::as_str) {
@@ -263,12 +263,12 @@ fn main() {
             whole,
             propagation,
         );
-        return;
+        return true;
     }
     #[cfg(feature = "debug")]
     if args.first().map(String::as_str) == Some("overlay") {
         overlay_cost();
-        return;
+        return true;
     }
     if args.first().map(String::as_str) == Some("empty") {
         empty(
@@ -276,6 +276,14 @@ fn main() {
             args[2].parse().expect("a spring count"),
             args[3].parse().expect("a frame count"),
         );
+        return true;
+    }
+    false
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if run_mode(&args) {
         return;
     }
     #[expect(clippy::cast_precision_loss, reason = "counts for a report")]
