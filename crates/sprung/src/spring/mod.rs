@@ -5,6 +5,7 @@
 mod analysis;
 mod parametrisations;
 mod presets;
+mod tuning;
 
 use crate::Scalar;
 use crate::error::{Parameter, SpringError};
