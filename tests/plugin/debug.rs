@@ -5,7 +5,7 @@
 use bevy::asset::AssetPlugin;
 use bevy::camera::{OrthographicProjection, Projection};
 use bevy::gizmos::config::{GizmoConfigGroup, GizmoConfigStore};
-use bevy::gizmos::{GizmoAsset, GizmoHandles};
+use bevy::gizmos::{GizmoAsset, GizmoHandles, GizmoPlugin};
 use bevy::input::ButtonState;
 use bevy::input::InputPlugin;
 use bevy::input::keyboard::{Key, KeyboardInput};
@@ -26,7 +26,7 @@ fn overlay_app(fps: u32, overlay: SpringDebugPlugin) -> App {
         // Bevy's gizmos draw skinned meshes' bounds: they need the mesh assets.
         .init_asset::<Mesh>()
         .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>()
-        .add_plugins(overlay);
+        .add_plugins((GizmoPlugin, overlay));
     app
 }
 
@@ -310,4 +310,16 @@ fn springs_whose_parent_or_component_goes_away_are_still_drawn_or_dropped() {
         .remove::<TranslationSpring>();
     app.update();
     assert!(strips::<SpringGizmos>(&app).is_empty());
+}
+
+#[test]
+fn without_bevy_s_gizmos_the_overlay_says_so_and_draws_nothing() {
+    let mut app = app(60);
+    app.add_plugins(SpringDebugPlugin::default());
+    spring_in_flight(&mut app);
+    // No gizmo storage, no systems: frames run as without it.
+    for _ in 0..3 {
+        app.update();
+    }
+    assert!(!app.world().contains_resource::<GizmoConfigStore>());
 }

@@ -69,7 +69,7 @@ fn the_predicted_path_is_the_path_the_spring_takes() {
             let dt = frame_seconds(&app);
             let ahead = forecast(&app, entity);
             // As many frames as the spring takes to settle, up to 4 s.
-            let frames = (4.0 * fps as f32) as usize;
+            let frames = 4 * fps as usize;
             let sampled: Vec<Vec3> = ahead.samples(dt, frames).collect();
             for (i, &sample) in sampled.iter().enumerate() {
                 app.update();

@@ -43,20 +43,23 @@ pub use springs::SpringGizmos;
 
 /// Shows what springs, camera rigs and chains are doing, as gizmos (see the [module](self)).
 ///
+/// It draws with Bevy's gizmos: add it after `DefaultPlugins` (which has `GizmoPlugin`);
+/// without a `GizmoPlugin` it says so once and draws nothing.
+///
 /// # Example
-/// ```
+/// ```no_run
 /// use bevy::prelude::*;
 /// use bevy_sprung::debug::SpringDebugPlugin;
 /// use bevy_sprung::prelude::*;
 ///
-/// let mut app = App::new();
-/// app.add_plugins((
-///     MinimalPlugins,
-///     SpringPlugins::default(),
-///     // Hidden until D is pressed.
-///     SpringDebugPlugin::hidden().toggled_by(KeyCode::KeyD),
-/// ));
-/// # app.update();
+/// App::new()
+///     .add_plugins((
+///         DefaultPlugins,
+///         SpringPlugins::default(),
+///         // Hidden until D is pressed.
+///         SpringDebugPlugin::hidden().toggled_by(KeyCode::KeyD),
+///     ))
+///     .run();
 /// ```
 #[derive(Debug, Clone, Copy)]
 pub struct SpringDebugPlugin {
@@ -104,7 +107,12 @@ pub struct SpringDebugSystems;
 impl Plugin for SpringDebugPlugin {
     fn build(&self, app: &mut App) {
         if !app.is_plugin_added::<GizmoPlugin>() {
-            app.add_plugins(GizmoPlugin);
+            warn!(
+                "bevy_sprung: SpringDebugPlugin draws with Bevy's gizmos, and the app has no \
+                 GizmoPlugin yet: add SpringDebugPlugin after DefaultPlugins (or after \
+                 GizmoPlugin); nothing is drawn"
+            );
+            return;
         }
         app.configure_sets(
             PostUpdate,
@@ -172,13 +180,4 @@ fn toggle_all(store: &mut GizmoConfigStore) {
     {
         store.config_mut::<CameraRigGizmos>().0.enabled = hidden;
     }
-}
-
-/// The rotation labels are drawn with: facing the first camera, so that they read in 3D as in
-/// 2D.
-fn label_rotation(cameras: &Query<&GlobalTransform, With<Camera>>) -> Quat {
-    cameras
-        .iter()
-        .next()
-        .map_or(Quat::IDENTITY, GlobalTransform::rotation)
 }

@@ -5,7 +5,6 @@ use bevy::color::palettes::css;
 use bevy::gizmos::config::GizmoConfigGroup;
 use bevy::prelude::*;
 
-use super::label_rotation;
 use crate::spring::{SpringAsleep, SpringForecast, SpringMotion};
 use crate::transform::{Translation, TranslationSpring};
 
@@ -162,4 +161,13 @@ pub(super) fn draw_springs(
             );
         }
     }
+}
+
+/// The rotation labels are drawn with: facing the first camera, so that they read in 3D as in
+/// 2D.
+fn label_rotation(cameras: &Query<&GlobalTransform, With<Camera>>) -> Quat {
+    cameras
+        .iter()
+        .next()
+        .map_or(Quat::IDENTITY, GlobalTransform::rotation)
 }

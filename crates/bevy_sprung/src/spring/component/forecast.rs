@@ -6,7 +6,8 @@ use core::fmt;
 use bevy::math::{NormedVectorSpace, VectorSpace};
 use sprung::{Spring, SpringState};
 
-use super::{PropertySpring, SpringMotion};
+use super::config::PropertySpring;
+use super::motion::{SpringMotion, rest_squared};
 use crate::property::{OffsetOf, SpringProperty, ValueOf, VelocityOf};
 use crate::space::{SpringSpace, is_within_rest};
 
@@ -88,7 +89,7 @@ impl<P: SpringProperty> PropertySpring<P> {
             rate: self.target_rate(),
             offset: offset.offset,
             velocity,
-            rest_squared: super::rest_squared::<P>(self.rest, self.target),
+            rest_squared: rest_squared::<P>(self.rest, self.target),
         }
     }
 }
