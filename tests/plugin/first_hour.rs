@@ -56,6 +56,8 @@ fn warnings(setup: impl FnOnce(&mut App)) -> Vec<String> {
     let logged = Logged::default();
     let subscriber = Registry::default().with(logged.clone());
     bevy::log::tracing::subscriber::with_default(subscriber, || {
+        // What plugins say while they are built is heard too.
+        bevy::log::tracing::callsite::rebuild_interest_cache();
         let mut app = app(60);
         setup(&mut app);
         for _ in 0..30 {
@@ -302,4 +304,19 @@ fn momentum_scroll_on_a_node_that_cannot_scroll_is_told_once() {
         ));
     });
     assert!(told.is_empty(), "{told:#?}");
+}
+
+#[test]
+fn a_debug_overlay_without_bevy_s_gizmos_is_told_once() {
+    let told = warnings(|app| {
+        app.add_plugins(bevy_sprung::debug::SpringDebugPlugin::default());
+        app.world_mut().spawn((
+            Transform::default(),
+            TranslationSpring::new(Spring::snappy(), Vec3::X * 100.0),
+        ));
+    });
+    assert_told_once(
+        &told,
+        &["SpringDebugPlugin", "GizmoPlugin", "DefaultPlugins"],
+    );
 }
