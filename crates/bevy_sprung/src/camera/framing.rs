@@ -13,10 +13,10 @@ use bevy::prelude::*;
 /// use bevy::prelude::*;
 /// use bevy_sprung::camera::CameraFraming;
 ///
-/// // Is the player pushing the camera (outside its dead zone)?
+/// // Is the player pushing the camera (on the edge of its dead zone)?
 /// fn pushing(rigs: Query<&CameraFraming>) {
 ///     for framing in &rigs {
-///         let _pushing = framing.point() != framing.held();
+///         let _pushing = framing.pushes_dead_zone();
 ///     }
 /// }
 /// # bevy::ecs::system::assert_is_system(pushing);
@@ -48,8 +48,7 @@ impl CameraFraming {
     }
 
     /// Where the dead zone holds the framed point: the zone's centre, which sits at the
-    /// [`ScreenPosition`](super::ScreenPosition). The point itself without a dead zone (or
-    /// while it pushes the zone's edge, on that axis).
+    /// [`ScreenPosition`](super::ScreenPosition). The point itself without a dead zone.
     #[inline]
     #[must_use]
     pub fn held(&self) -> Vec3 {
@@ -63,6 +62,14 @@ impl CameraFraming {
     #[must_use]
     pub fn dead_zone(&self) -> Vec3 {
         self.dead_zone
+    }
+
+    /// Whether the framed point is on an edge of the dead zone (to rounding): it pushes the
+    /// zone, and the camera follows. `false` without a dead zone.
+    #[must_use]
+    pub fn pushes_dead_zone(&self) -> bool {
+        let reach = (self.point - self.held).abs();
+        self.dead_zone != Vec3::ZERO && reach.cmpge(self.dead_zone * (1.0 - 1e-4)).any()
     }
 
     /// The half extents of the view at the framed point's distance (along the camera's right

@@ -297,17 +297,16 @@ pub(super) fn frame_goals(
 
         // The dead zone holds the goal until the point leaves the zone around it: the goal is
         // dragged along by the zone's edge (a backlash, the same for any frame rate).
+        // Without a zone its half extents are zero, and the point itself is held.
         let half = rig.dead_zone.map_or(Vec3::ZERO, |zone| {
             let half = zone.half_size(half_view);
             Vec3::new(half.x, half.y, half.x)
         });
-        let held = match rig.dead_zone {
-            Some(_) => {
-                let held = rig.tracking.held.unwrap_or(point);
-                held.clamp(point - half, point + half)
-            }
-            None => point,
-        };
+        let held = rig
+            .tracking
+            .held
+            .unwrap_or(point)
+            .clamp(point - half, point + half);
         rig.tracking.held = Some(held);
 
         let shift = rig.screen.map_or(Vec3::ZERO, |screen| {

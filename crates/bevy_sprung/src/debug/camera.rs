@@ -131,10 +131,11 @@ fn draw_dead_zone(gizmos: &mut Gizmos<CameraRigGizmos>, framing: &CameraFraming)
     if half == Vec3::ZERO {
         return;
     }
-    // Pushing: the point on (or past) an edge of the zone around the held point.
-    let reach = (framing.point() - framing.held()).abs();
-    let pushing = reach.cmpge(half * (1.0 - 1e-4)).any();
-    let color = if pushing { css::ORANGE } else { css::LIME };
+    let color = if framing.pushes_dead_zone() {
+        css::ORANGE
+    } else {
+        css::LIME
+    };
     gizmos.cube(
         Transform::from_translation(framing.held()).with_scale(2.0 * half),
         color,

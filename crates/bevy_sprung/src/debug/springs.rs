@@ -56,15 +56,15 @@ impl GizmoConfigGroup for SpringGizmos {}
 
 /// How a spring's future is drawn: its time step and how many points.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct PathSampling {
-    pub(crate) step: f32,
-    pub(crate) count: usize,
+struct PathSampling {
+    step: f32,
+    count: usize,
 }
 
 impl PathSampling {
     /// The sampling of a path `seconds` long at `step` (at most [`MAX_PATH_POINTS`] points;
     /// a longer path is sampled more coarsely).
-    pub(crate) fn over(seconds: f32, step: f32) -> Self {
+    fn over(seconds: f32, step: f32) -> Self {
         let step = if step > 0.0 && step.is_finite() {
             step
         } else {
@@ -95,7 +95,7 @@ impl PathSampling {
 
 /// The predicted path of a spring in its own (parent's) space: where it is, then its value
 /// at each step of `sampling`.
-pub(crate) fn predicted_path(
+fn predicted_path(
     forecast: &SpringForecast<Translation>,
     sampling: PathSampling,
 ) -> impl Iterator<Item = Vec3> + '_ {
