@@ -6,7 +6,7 @@ use std::time::Duration;
 use bevy::camera::{OrthographicProjection, Projection};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
-use bevy::window::{PrimaryWindow, WindowResolution};
+
 use bevy_sprung::camera::{
     CameraGoal, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
 };
@@ -16,7 +16,7 @@ use bevy_sprung::spring::SpringAsleep;
 use bevy_sprung::spring::SpringUpdate;
 use bevy_sprung::tracking::TargetWarped;
 
-use crate::harness::{app, run_pattern};
+use crate::harness::{app, primary_window, run_pattern};
 
 const RATES: [u32; 5] = [30, 60, 144, 240, 360];
 
@@ -43,13 +43,7 @@ fn camera_app(fps: u32, (width, height): (u32, u32), path: fn(f32) -> Vec3) -> (
     let mut app = app(fps);
     app.insert_resource(Path(path))
         .add_systems(Update, move_player);
-    app.world_mut().spawn((
-        Window {
-            resolution: WindowResolution::new(width, height).with_scale_factor_override(1.0),
-            ..default()
-        },
-        PrimaryWindow,
-    ));
+    primary_window(app.world_mut(), width, height);
     let player = app
         .world_mut()
         .spawn((Player, Transform::from_translation(path(0.0))))
@@ -577,13 +571,7 @@ fn a_bouncy_camera_slows_into_the_edge_where_a_clamp_would_stop_it_dead() {
 fn group_framing_keeps_every_target_in_view_with_the_margin() {
     for fps in RATES {
         let mut app = app(fps);
-        app.world_mut().spawn((
-            Window {
-                resolution: WindowResolution::new(800, 600).with_scale_factor_override(1.0),
-                ..default()
-            },
-            PrimaryWindow,
-        ));
+        primary_window(app.world_mut(), 800, 600);
         let targets = [
             (Vec3::new(-300.0, 0.0, 0.0), 40.0, 1.0),
             (Vec3::new(900.0, 350.0, 0.0), 60.0, 3.0),

@@ -1497,14 +1497,7 @@ fn chaos_app(seed: u64, plugin: SpringPlugins) -> App {
         chaos.events.push("group settled");
     });
     let world = app.world_mut();
-    world.spawn((
-        Window {
-            resolution: bevy::window::WindowResolution::new(800, 600)
-                .with_scale_factor_override(1.0),
-            ..default()
-        },
-        bevy::window::PrimaryWindow,
-    ));
+    crate::harness::primary_window(world, 800, 600);
     for kind in [Kind::Parent, Kind::Leader, Kind::Leader] {
         spawn(world, kind);
     }

@@ -10,14 +10,13 @@ use bevy::input::ButtonState;
 use bevy::input::InputPlugin;
 use bevy::input::keyboard::{Key, KeyboardInput};
 use bevy::prelude::*;
-use bevy::window::{PrimaryWindow, WindowResolution};
 use bevy_sprung::camera::{CameraFraming, CameraTargets, Confiner, DeadZone};
 use bevy_sprung::chain::SpringChain;
 use bevy_sprung::debug::{CameraRigGizmos, ChainGizmos, SpringDebugPlugin, SpringGizmos};
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::SpringMotion;
 
-use crate::harness::app;
+use crate::harness::{app, primary_window};
 
 /// A headless app at `fps` with the overlay (and what gizmos need: assets, input).
 fn overlay_app(fps: u32, overlay: SpringDebugPlugin) -> App {
@@ -63,6 +62,14 @@ fn drawn<G: GizmoConfigGroup>(
     Some(asset.buffer().clone())
 }
 
+/// Where `entity` is in the world this frame.
+fn world_position(app: &App, entity: Entity) -> Vec3 {
+    app.world()
+        .get::<GlobalTransform>(entity)
+        .unwrap()
+        .translation()
+}
+
 /// A spring in flight under a moved, scaled parent: pixels far from the origin.
 fn spring_in_flight(app: &mut App) -> (Entity, Entity) {
     let world = app.world_mut();
@@ -94,11 +101,7 @@ fn the_drawn_path_is_the_path_the_spring_then_takes() {
         app.update();
         app.update();
         // The drawn strip that starts where the spring is now.
-        let here = app
-            .world()
-            .get::<GlobalTransform>(spring)
-            .unwrap()
-            .translation();
+        let here = world_position(&app, spring);
         let path = strips::<SpringGizmos>(&app)
             .into_iter()
             .find(|strip| strip[0].distance(here) < 1e-3)
@@ -111,11 +114,7 @@ fn the_drawn_path_is_the_path_the_spring_then_takes() {
         // Each later frame puts the spring on the next point drawn (to rounding at ~2000 px).
         for (frame, &point) in path.iter().enumerate().skip(1) {
             app.update();
-            let taken = app
-                .world()
-                .get::<GlobalTransform>(spring)
-                .unwrap()
-                .translation();
+            let taken = world_position(&app, spring);
             assert!(
                 taken.distance(point) <= 512.0 * f32::EPSILON * 2500.0,
                 "{fps} fps, frame {frame}: drawn {point}, taken {taken}"
@@ -147,11 +146,7 @@ fn the_settle_label_is_the_forecast_and_a_spring_asleep_is_a_ring() {
     for _ in 0..600 {
         app.update();
     }
-    let rest = app
-        .world()
-        .get::<GlobalTransform>(spring)
-        .unwrap()
-        .translation();
+    let rest = world_position(&app, spring);
     let drawn = strips::<SpringGizmos>(&app);
     assert_eq!(drawn.len(), 1, "asleep: {} strips", drawn.len());
     let ring = &drawn[0];
@@ -199,13 +194,7 @@ fn a_hidden_overlay_draws_nothing_until_its_key_shows_it() {
 #[test]
 fn the_dead_zone_is_drawn_around_the_held_point() {
     let mut app = overlay_app(60, SpringDebugPlugin::default());
-    app.world_mut().spawn((
-        Window {
-            resolution: WindowResolution::new(1280, 720).with_scale_factor_override(1.0),
-            ..default()
-        },
-        PrimaryWindow,
-    ));
+    primary_window(app.world_mut(), 1280, 720);
     let player = app
         .world_mut()
         .spawn(Transform::from_xyz(100.0, 50.0, 0.0))

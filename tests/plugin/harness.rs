@@ -23,6 +23,21 @@ pub(crate) fn app_with(fps: u32, plugin: SpringPlugins) -> App {
     app
 }
 
+/// A primary window of `width × height` logical pixels (scale factor 1): what a camera's view
+/// is measured in.
+pub(crate) fn primary_window(world: &mut World, width: u32, height: u32) -> Entity {
+    world
+        .spawn((
+            bevy::window::Window {
+                resolution: bevy::window::WindowResolution::new(width, height)
+                    .with_scale_factor_override(1.0),
+                ..default()
+            },
+            bevy::window::PrimaryWindow,
+        ))
+        .id()
+}
+
 /// One frame at `fps`, as the `Duration` Bevy adds (whole nanoseconds).
 pub(crate) fn frame(fps: u32) -> Duration {
     Duration::from_secs_f64(1.0 / f64::from(fps))
