@@ -18,6 +18,7 @@ mod chaos;
 mod choreography;
 mod clocks;
 mod debug;
+mod designer;
 mod disabling;
 mod first_hour;
 mod follow;

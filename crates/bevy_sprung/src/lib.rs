@@ -99,6 +99,8 @@ pub mod color;
 pub mod curve;
 #[cfg(feature = "debug")]
 pub mod debug;
+#[cfg(feature = "designer")]
+pub mod designer;
 pub mod follow;
 pub mod implicit;
 pub mod inertia;
@@ -161,6 +163,12 @@ pub mod guides {
     #[cfg(feature = "camera")]
     #[doc = include_str!("../docs/camera.md")]
     pub mod camera {}
+
+    /// Tuning springs with the designer: how to read its plot, what each readout means, and
+    /// the workflow from "feels wrong" to a saved `*.spring.ron`. (Feature `designer`.)
+    #[cfg(feature = "designer")]
+    #[doc = include_str!("../docs/tuning.md")]
+    pub mod tuning {}
 }
 
 // The README's examples are compiled and run as doc tests.
