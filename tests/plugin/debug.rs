@@ -12,7 +12,10 @@ use bevy::input::keyboard::{Key, KeyboardInput};
 use bevy::prelude::*;
 use bevy_sprung::camera::{CameraFraming, CameraTargets, Confiner, DeadZone};
 use bevy_sprung::chain::SpringChain;
-use bevy_sprung::debug::{CameraRigGizmos, ChainGizmos, SpringDebugPlugin, SpringGizmos};
+use bevy_sprung::debug::{
+    CameraRigGizmos, ChainGizmos, SpringDebugPlugin, SpringGizmos, ThrowGizmos,
+};
+use bevy_sprung::inertia::{DragBounds, Inertia, Snap};
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::SpringMotion;
 
@@ -311,4 +314,213 @@ fn without_bevy_s_gizmos_the_overlay_says_so_and_draws_nothing() {
         app.update();
     }
     assert!(!app.world().contains_resource::<GizmoConfigStore>());
+}
+
+/// The width and height of a drawn strip.
+fn extent(strip: &[Vec3]) -> Vec2 {
+    let (low, high) = strip
+        .iter()
+        .fold((Vec3::MAX, Vec3::MIN), |(l, h), p| (l.min(*p), h.max(*p)));
+    (high - low).truncate()
+}
+
+/// The centre and radius of a drawn circle (a closed strip).
+fn circle_of(strip: &[Vec3]) -> (Vec3, f32) {
+    let ring = &strip[..strip.len() - 1];
+    let centre = ring.iter().copied().sum::<Vec3>() / ring.len() as f32;
+    (centre, strip[0].distance(centre))
+}
+
+/// A rotation spring's pointer: the path drawn for its tip is where the tip then is, frame by
+/// frame, under a moved and turned parent.
+#[test]
+fn a_rotation_springs_drawn_tip_path_is_the_turn_it_then_takes() {
+    for fps in [30, 60, 144, 240] {
+        let mut app = overlay_app(fps, SpringDebugPlugin::default());
+        let mut store = app.world_mut().resource_mut::<GizmoConfigStore>();
+        store.config_mut::<SpringGizmos>().1.path_step = 1.0 / fps as f32;
+        let size = store.config::<SpringGizmos>().1.size;
+        let parent = app
+            .world_mut()
+            .spawn(
+                Transform::from_xyz(-1800.0, 700.0, 0.0).with_rotation(Quat::from_rotation_z(0.7)),
+            )
+            .id();
+        let spring = app
+            .world_mut()
+            .spawn((
+                Transform::from_xyz(40.0, 0.0, 0.0),
+                RotationSpring::new(Spring::wobbly(), Quat::from_rotation_z(2.5))
+                    .with_velocity(Vec3::new(0.0, 0.0, -6.0)),
+                ChildOf(parent),
+            ))
+            .id();
+        app.update();
+        app.update();
+        let tip = |app: &App| {
+            let global = app.world().get::<GlobalTransform>(spring).unwrap();
+            global.translation() + global.rotation() * Vec3::X * size * 4.0
+        };
+        let now = tip(&app);
+        let path = strips::<SpringGizmos>(&app)
+            .into_iter()
+            .find(|strip| strip.len() > 2 && strip[0].distance(now) < 1e-2)
+            .unwrap_or_else(|| panic!("{fps} fps: no tip path drawn from {now}"));
+        for (frame, &point) in path.iter().enumerate().skip(1) {
+            app.update();
+            let taken = tip(&app);
+            assert!(
+                taken.distance(point) < 2e-3,
+                "{fps} fps, frame {frame}: drawn {point}, taken {taken}"
+            );
+        }
+    }
+}
+
+/// A fling is drawn with its bounds and snap points, and the rest ring drawn at the start of
+/// the throw is where it comes to rest: a free coast, and a snap to a point.
+#[test]
+fn a_throws_rest_ring_is_where_it_comes_to_rest() {
+    let bounds = DragBounds {
+        min: Vec3::new(-2000.0, -900.0, 0.0),
+        max: Vec3::new(2000.0, 900.0, 0.0),
+        give: 60.0,
+    };
+    let slots = vec![
+        Vec3::new(1200.0, 300.0, 0.0),
+        Vec3::new(-900.0, -500.0, 0.0),
+    ];
+    for (inertia, fling) in [
+        (Inertia::new(2.0), Vec3::new(900.0, -400.0, 0.0)),
+        (
+            Inertia::new(3.0)
+                .bounded(bounds)
+                .snapping(Snap::Points(slots.clone())),
+            Vec3::new(2400.0, 700.0, 0.0),
+        ),
+    ] {
+        let mut app = overlay_app(60, SpringDebugPlugin::default());
+        let size = app
+            .world()
+            .resource::<GizmoConfigStore>()
+            .config::<ThrowGizmos>()
+            .1
+            .size;
+        let puck = app
+            .world_mut()
+            .spawn((Transform::from_xyz(150.0, 80.0, 0.0), inertia.clone()))
+            .id();
+        app.update();
+        app.world_mut()
+            .get_mut::<Inertia>(puck)
+            .unwrap()
+            .fling(fling);
+        app.update();
+        app.update();
+        let circles: Vec<(Vec3, f32)> = strips::<ThrowGizmos>(&app)
+            .iter()
+            .filter(|strip| strip.len() > 8)
+            .map(|strip| circle_of(strip))
+            .collect();
+        let rest = circles
+            .iter()
+            .find(|(_, radius)| (radius - size).abs() < 0.1)
+            .unwrap_or_else(|| panic!("no rest ring among {circles:?}"))
+            .0;
+        if inertia.bounds.is_some() {
+            for slot in &slots {
+                assert!(
+                    circles
+                        .iter()
+                        .any(|(centre, _)| centre.distance(*slot) < 1e-2),
+                    "slot {slot} not drawn"
+                );
+            }
+            let extents: Vec<Vec2> = strips::<ThrowGizmos>(&app)
+                .iter()
+                .map(|strip| extent(strip))
+                .collect();
+            for (name, give) in [("bounds", 0.0), ("give", 2.0 * bounds.give)] {
+                let wanted = (bounds.max - bounds.min).truncate() + give;
+                assert!(
+                    extents.iter().any(|e| e.distance(wanted) < 1e-3),
+                    "the {name} box {wanted} is not among {extents:?}"
+                );
+            }
+        }
+        for _ in 0..1200 {
+            app.update();
+        }
+        let stopped = world_position(&app, puck);
+        assert!(
+            stopped.distance(rest) < 1e-3 * stopped.length().max(1.0),
+            "drawn rest {rest}, stopped at {stopped}"
+        );
+    }
+}
+
+/// A scale spring's boxes: the target's, at the target scale times the parent's.
+#[test]
+fn a_scale_springs_target_box_is_its_target_scale() {
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    let size = app
+        .world()
+        .resource::<GizmoConfigStore>()
+        .config::<SpringGizmos>()
+        .1
+        .size;
+    let parent = app
+        .world_mut()
+        .spawn(Transform::from_xyz(600.0, 200.0, 0.0).with_scale(Vec3::splat(3.0)))
+        .id();
+    app.world_mut().spawn((
+        Transform::default(),
+        ScaleSpring::new(Spring::bouncy(), Vec3::new(2.0, 0.5, 1.0)),
+        ChildOf(parent),
+    ));
+    app.update();
+    app.update();
+    let widths: Vec<Vec2> = strips::<SpringGizmos>(&app)
+        .iter()
+        .map(|strip| extent(strip))
+        .collect();
+    let target = Vec2::new(2.0, 0.5) * 3.0 * size * 4.0;
+    assert!(
+        widths.iter().any(|w| w.distance(target) < 1e-3),
+        "no box of {target} among {widths:?}"
+    );
+}
+
+/// A one-second hitch: the spring lands on the point of the path drawn before it for the time
+/// the game clock advanced (Bevy caps a frame's virtual step at a quarter second).
+#[test]
+fn after_a_hitch_the_spring_is_on_the_path_drawn_before_it() {
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    let (_, spring) = spring_in_flight(&mut app);
+    app.update();
+    app.update();
+    let here = world_position(&app, spring);
+    let path = strips::<SpringGizmos>(&app)
+        .into_iter()
+        .find(|strip| strip[0].distance(here) < 1e-3)
+        .expect("a path drawn from the spring");
+    app.insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
+        std::time::Duration::from_secs(1),
+    ));
+    app.update();
+    let advanced = app.world().resource::<Time<Virtual>>().delta_secs();
+    // The virtual step in frames of 1/60 s: a whole number (0.25 s is 15).
+    let index = (1..=60)
+        .find(|&frames| (frames as f32 / 60.0 - advanced).abs() < 1e-4)
+        .expect("a whole number of frames");
+    assert!(
+        index >= 15,
+        "the hitch advanced the game clock {advanced} s"
+    );
+    let taken = world_position(&app, spring);
+    assert!(
+        taken.distance(path[index]) <= 512.0 * f32::EPSILON * 2500.0,
+        "after {advanced} s: drawn {}, taken {taken}",
+        path[index]
+    );
 }

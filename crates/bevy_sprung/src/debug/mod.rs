@@ -3,7 +3,9 @@
 //!
 //! - **springs** ([`SpringGizmos`]): each `Transform` translation spring's target, velocity,
 //!   the path it will take to rest and the seconds left until it settles, and the springs
-//!   asleep. The path and the time are exact, from the closed-form future of the spring
+//!   asleep; each rotation spring's pointer (the local x axis) now and at its target with the
+//!   path of its tip, and each scale spring's box now and at its target. The paths and the
+//!   times are exact, from the closed-form future of the spring
 //!   ([`SpringForecast`](crate::spring::SpringForecast)), not sampled guesses: the path drawn
 //!   is the path the spring then takes, at any frame rate;
 //! - **camera rigs** ([`CameraRigGizmos`], feature `camera`): the guides of each
@@ -14,7 +16,10 @@
 //!   targets with their radii and the extent the group framing fits, the orbit sphere, and
 //!   the occlusion ray;
 //! - **chains** ([`ChainGizmos`]): each [`SpringChain`](crate::chain::SpringChain)'s joints
-//!   and bones, the rest pose they spring around, and its colliders.
+//!   and bones, the rest pose they spring around, and its colliders;
+//! - **throws** ([`ThrowGizmos`]): each [`Inertia`](crate::inertia::Inertia)'s and drag's
+//!   bounds with the give of their rubber band, the points, lines or grid they snap to, and
+//!   where a moving throw will come to rest.
 //!
 //! Each group is a Bevy [`GizmoConfigGroup`] of its own, drawn over the scene: turn one on or
 //! off, change its options or its line width, through [`GizmoConfigStore`] (or all at once, with a key:
@@ -30,6 +35,8 @@
 mod camera;
 mod chains;
 mod springs;
+mod throws;
+mod turns;
 
 use bevy::gizmos::config::{GizmoConfigGroup, GizmoConfigStore};
 use bevy::gizmos::{AppGizmoBuilder, GizmoPlugin};
@@ -40,6 +47,7 @@ use bevy::transform::TransformSystems;
 pub use camera::CameraRigGizmos;
 pub use chains::ChainGizmos;
 pub use springs::SpringGizmos;
+pub use throws::ThrowGizmos;
 
 /// Shows what springs, camera rigs and chains are doing, as gizmos (see the [module](self)).
 ///
@@ -120,11 +128,20 @@ impl Plugin for SpringDebugPlugin {
         );
         add_group::<SpringGizmos>(app, self.shown);
         add_group::<ChainGizmos>(app, self.shown);
+        add_group::<ThrowGizmos>(app, self.shown);
         app.add_systems(
             PostUpdate,
             (
-                springs::draw_springs.run_if(is_shown::<SpringGizmos>),
+                (
+                    springs::draw_springs,
+                    turns::draw_rotations,
+                    turns::draw_scales,
+                )
+                    .run_if(is_shown::<SpringGizmos>),
                 chains::draw_chains.run_if(is_shown::<ChainGizmos>),
+                throws::draw_inertia.run_if(is_shown::<ThrowGizmos>),
+                #[cfg(feature = "picking")]
+                throws::draw_drags.run_if(is_shown::<ThrowGizmos>),
             )
                 .in_set(SpringDebugSystems),
         );
@@ -170,12 +187,14 @@ fn is_shown<G: GizmoConfigGroup>(store: Res<GizmoConfigStore>) -> bool {
 
 /// Shows every group if any is hidden, otherwise hides them all.
 fn toggle_all(store: &mut GizmoConfigStore) {
-    let hidden =
-        !store.config::<SpringGizmos>().0.enabled || !store.config::<ChainGizmos>().0.enabled;
+    let hidden = !store.config::<SpringGizmos>().0.enabled
+        || !store.config::<ChainGizmos>().0.enabled
+        || !store.config::<ThrowGizmos>().0.enabled;
     #[cfg(feature = "camera")]
     let hidden = hidden || !store.config::<CameraRigGizmos>().0.enabled;
     store.config_mut::<SpringGizmos>().0.enabled = hidden;
     store.config_mut::<ChainGizmos>().0.enabled = hidden;
+    store.config_mut::<ThrowGizmos>().0.enabled = hidden;
     #[cfg(feature = "camera")]
     {
         store.config_mut::<CameraRigGizmos>().0.enabled = hidden;

@@ -38,7 +38,7 @@ const MAX_PATH_POINTS: usize = 1024;
 
 /// How far ahead the path of a spring that never settles (a moving target) is drawn, in
 /// seconds.
-const UNSETTLED_HORIZON: f32 = 2.0;
+pub(super) const UNSETTLED_HORIZON: f32 = 2.0;
 
 impl Default for SpringGizmos {
     fn default() -> Self {
@@ -56,15 +56,15 @@ impl GizmoConfigGroup for SpringGizmos {}
 
 /// How a spring's future is drawn: its time step and how many points.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct PathSampling {
-    step: f32,
-    count: usize,
+pub(super) struct PathSampling {
+    pub(super) step: f32,
+    pub(super) count: usize,
 }
 
 impl PathSampling {
     /// The sampling of a path `seconds` long at `step` (at most [`MAX_PATH_POINTS`] points;
     /// a longer path is sampled more coarsely).
-    fn over(seconds: f32, step: f32) -> Self {
+    pub(super) fn over(seconds: f32, step: f32) -> Self {
         let step = if step > 0.0 && step.is_finite() {
             step
         } else {
@@ -147,25 +147,36 @@ pub(super) fn draw_springs(
             );
         }
         if options.settle_time {
-            let label = match settle {
-                Some(seconds) => format!("{seconds:.2} s"),
-                None => "moving".to_owned(),
-            };
-            let beside = here + facing * Vec3::new(size * 1.5, size * 1.5, 0.0);
-            gizmos.text(
-                Isometry3d::new(beside, facing),
-                &label,
-                size * 1.5,
-                Vec2::new(-0.5, -0.5),
-                css::WHITE,
-            );
+            settle_label(&mut gizmos, here, facing, settle);
         }
     }
 }
 
+/// The seconds left until a spring at `here` settles (or "moving"), beside it.
+pub(super) fn settle_label(
+    gizmos: &mut Gizmos<SpringGizmos>,
+    here: Vec3,
+    facing: Quat,
+    settle: Option<f32>,
+) {
+    let size = gizmos.config_ext.size;
+    let label = match settle {
+        Some(seconds) => format!("{seconds:.2} s"),
+        None => "moving".to_owned(),
+    };
+    let beside = here + facing * Vec3::new(size * 1.5, size * 1.5, 0.0);
+    gizmos.text(
+        Isometry3d::new(beside, facing),
+        &label,
+        size * 1.5,
+        Vec2::new(-0.5, -0.5),
+        css::WHITE,
+    );
+}
+
 /// The rotation labels are drawn with: facing the first camera, so that they read in 3D as in
 /// 2D.
-fn label_rotation(cameras: &Query<&GlobalTransform, With<Camera>>) -> Quat {
+pub(super) fn label_rotation(cameras: &Query<&GlobalTransform, With<Camera>>) -> Quat {
     cameras
         .iter()
         .next()
