@@ -320,3 +320,14 @@ fn a_debug_overlay_without_bevy_s_gizmos_is_told_once() {
         &["SpringDebugPlugin", "GizmoPlugin", "DefaultPlugins"],
     );
 }
+
+#[test]
+fn a_designer_without_bevy_s_ui_is_told_once() {
+    let told = warnings(|app| {
+        app.add_plugins(bevy_sprung::designer::SpringDesignerPlugin::default());
+    });
+    assert_told_once(
+        &told,
+        &["SpringDesignerPlugin", "UiPlugin", "DefaultPlugins"],
+    );
+}

@@ -138,8 +138,9 @@ impl Plugin for SpringDesignerPlugin {
             .add_systems(Update, attach::sync);
         if !app.is_plugin_added::<bevy::ui::UiPlugin>() {
             warn!(
-                "SpringDesignerPlugin: this app has no Bevy UI (`UiPlugin`, part of \
-                 `DefaultPlugins`), so the designer has no panel; add it after DefaultPlugins"
+                "bevy_sprung: SpringDesignerPlugin shows its panel with Bevy's UI, and the app has \
+                 no UiPlugin yet: add SpringDesignerPlugin after DefaultPlugins; without it \
+                 there is no panel (SpringDesign, TuneSpring and SaveSpringDesign still work)"
             );
             return;
         }
