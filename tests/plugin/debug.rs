@@ -524,3 +524,45 @@ fn after_a_hitch_the_spring_is_on_the_path_drawn_before_it() {
         path[index]
     );
 }
+
+/// A change of shot: the blend path drawn is where the camera then goes, frame by frame.
+#[test]
+fn the_drawn_blend_is_the_path_the_camera_then_takes() {
+    use bevy_sprung::camera::{CameraBlend, VirtualCamera};
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    app.world_mut()
+        .spawn((VirtualCamera::new(2), Transform::from_xyz(0.0, 0.0, 900.0)));
+    let close = app
+        .world_mut()
+        .spawn((
+            VirtualCamera::new(1),
+            Transform::from_xyz(1400.0, -300.0, 400.0),
+        ))
+        .id();
+    let camera = app
+        .world_mut()
+        .spawn((Camera3d::default(), CameraBlend::new(Spring::smooth())))
+        .id();
+    app.update();
+    app.update();
+    app.world_mut()
+        .get_mut::<VirtualCamera>(close)
+        .unwrap()
+        .priority = 3;
+    app.update();
+    app.update();
+    let here = world_position(&app, camera);
+    let path = strips::<CameraRigGizmos>(&app)
+        .into_iter()
+        .find(|strip| strip.len() > 10 && strip[0].distance(here) < 1e-3)
+        .unwrap_or_else(|| panic!("no blend path drawn from {here}"));
+    assert!(path.len() > 20, "a blend of {} points", path.len());
+    for (frame, &point) in path.iter().enumerate().skip(1).take(60) {
+        app.update();
+        let taken = world_position(&app, camera);
+        assert!(
+            taken.distance(point) <= 512.0 * f32::EPSILON * 1500.0,
+            "frame {frame}: drawn {point}, taken {taken}"
+        );
+    }
+}

@@ -19,7 +19,10 @@ use crate::camera::{
 /// - the confiner's bounds, and within them the band where the camera slows;
 /// - each target with its radius and, with group framing, the extent the zoom fits;
 /// - the orbit sphere, and the ray an occluder is looked for on (red while one pulls
-///   the camera in).
+///   the camera in);
+/// - every shot ([`VirtualCamera`](crate::camera::VirtualCamera)) as a frame facing where it
+///   looks, with its priority (gold for the one a blending camera shows), and the path a
+///   blending camera will take to its shot with the seconds left.
 ///
 /// Turn it on or off, and set its line width, through
 /// [`GizmoConfigStore`](bevy::gizmos::config::GizmoConfigStore).

@@ -14,7 +14,9 @@
 //!   the framed point and the goal (with the look-ahead between them), the view the camera is
 //!   heading for, the confiner's bounds with the band where the camera slows, the group's
 //!   targets with their radii and the extent the group framing fits, the orbit sphere, and
-//!   the occlusion ray;
+//!   the occlusion ray; and every shot ([`VirtualCamera`](crate::camera::VirtualCamera)) as a
+//!   frame with its priority, the one showing in gold, with the path a blending camera will
+//!   take to it;
 //! - **chains** ([`ChainGizmos`]): each [`SpringChain`](crate::chain::SpringChain)'s joints
 //!   and bones, the rest pose they spring around, and its colliders;
 //! - **throws** ([`ThrowGizmos`]): each [`Inertia`](crate::inertia::Inertia)'s and drag's
@@ -34,6 +36,8 @@
 #[cfg(feature = "camera")]
 mod camera;
 mod chains;
+#[cfg(feature = "camera")]
+mod shots;
 mod springs;
 mod throws;
 mod turns;
@@ -150,7 +154,7 @@ impl Plugin for SpringDebugPlugin {
             add_group::<CameraRigGizmos>(app, self.shown);
             app.add_systems(
                 PostUpdate,
-                camera::draw_rigs
+                (camera::draw_rigs, shots::draw_shots)
                     .run_if(is_shown::<CameraRigGizmos>)
                     .in_set(SpringDebugSystems),
             );

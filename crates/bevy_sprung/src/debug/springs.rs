@@ -147,28 +147,28 @@ pub(super) fn draw_springs(
             );
         }
         if options.settle_time {
-            settle_label(&mut gizmos, here, facing, settle);
+            settle_label(&mut gizmos, here, facing, settle, size * 1.5);
         }
     }
 }
 
-/// The seconds left until a spring at `here` settles (or "moving"), beside it.
-pub(super) fn settle_label(
-    gizmos: &mut Gizmos<SpringGizmos>,
+/// The seconds left until a spring at `here` settles (or "moving"), beside it, `size` high.
+pub(super) fn settle_label<G: GizmoConfigGroup>(
+    gizmos: &mut Gizmos<G>,
     here: Vec3,
     facing: Quat,
     settle: Option<f32>,
+    size: f32,
 ) {
-    let size = gizmos.config_ext.size;
     let label = match settle {
         Some(seconds) => format!("{seconds:.2} s"),
         None => "moving".to_owned(),
     };
-    let beside = here + facing * Vec3::new(size * 1.5, size * 1.5, 0.0);
+    let beside = here + facing * Vec3::new(size, size, 0.0);
     gizmos.text(
         Isometry3d::new(beside, facing),
         &label,
-        size * 1.5,
+        size,
         Vec2::new(-0.5, -0.5),
         css::WHITE,
     );

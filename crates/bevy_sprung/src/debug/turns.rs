@@ -64,7 +64,8 @@ pub(super) fn draw_rotations(
             gizmos.linestrip(path, css::AQUA);
         }
         if options.settle_time {
-            settle_label(&mut gizmos, tip(forecast.value_at(0.0)), facing, settle);
+            let at = tip(forecast.value_at(0.0));
+            settle_label(&mut gizmos, at, facing, settle, options.size * 1.5);
         }
     }
 }
@@ -105,7 +106,8 @@ pub(super) fn draw_scales(
         gizmos.rect(pose, extent(now), css::WHITE);
         if options.settle_time {
             let corner = here + rotation * (extent(now) * 0.5).extend(0.0);
-            settle_label(&mut gizmos, corner, facing, forecast.settle_time());
+            let settle = forecast.settle_time();
+            settle_label(&mut gizmos, corner, facing, settle, options.size * 1.5);
         }
     }
 }
