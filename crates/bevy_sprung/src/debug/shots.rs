@@ -13,6 +13,7 @@ const FRAME: f32 = 3.0;
 
 /// What the group reads of a blending camera.
 type Blending = (
+    &'static GlobalTransform,
     &'static BlendTrack,
     &'static BlendTranslationSpring,
     &'static SpringMotion<BlendTranslation>,
@@ -20,7 +21,8 @@ type Blending = (
 );
 
 /// Draws each [`VirtualCamera`] as a frame facing where it looks, with its priority: gold for
-/// the shot a blending camera shows, grey for the others; and, while a camera blends to its
+/// the shot a blending camera shows, grey for the others (not one a camera is at: it would be
+/// seen from inside); and, while a camera blends to its
 /// shot, the path it will take there (exact, from its blend's forecast, for a shot that holds
 /// still) and the seconds left.
 pub(super) fn draw_shots(
@@ -29,9 +31,16 @@ pub(super) fn draw_shots(
     cameras: Query<Blending>,
 ) {
     let options = *gizmos.config_ext;
-    let showing: Vec<Entity> = cameras.iter().filter_map(|(t, ..)| t.shot()).collect();
+    let showing: Vec<Entity> = cameras.iter().filter_map(|(_, t, ..)| t.shot()).collect();
     let frame = Vec2::new(FRAME, FRAME * 2.0 / 3.0) * options.size;
     for (entity, shot, global, _) in &shots {
+        // A shot a camera is at is seen from inside: its frame would only clutter the view.
+        let seen_from = cameras
+            .iter()
+            .any(|(eye, ..)| eye.translation().distance(global.translation()) < frame.x);
+        if seen_from {
+            continue;
+        }
         let live = showing.contains(&entity);
         let color = if live { css::GOLD } else { css::GRAY };
         let pose = Isometry3d::new(global.translation(), global.rotation());
@@ -51,7 +60,7 @@ pub(super) fn draw_shots(
             color,
         );
     }
-    for (track, spring, motion, asleep) in &cameras {
+    for (_, track, spring, motion, asleep) in &cameras {
         let Some(shot) = track.shot().and_then(|shot| shots.get(shot).ok()) else {
             continue;
         };
