@@ -159,8 +159,14 @@ fn the_readouts_are_those_of_the_exact_response() {
     }
 }
 
-/// A headless app whose assets are in a fresh folder holding `springs/ball.spring.ron`.
-fn designer_app(name: &str) -> (App, std::path::PathBuf) {
+/// A headless app whose assets are in a fresh folder holding `springs/ball.spring.ron`, and
+/// the turn it takes with the tests that capture warnings: without Bevy's UI the designer
+/// warns as it is built, and a warning reached on this thread while another test listens for
+/// it can leave that test's listener out (see `first_hour::warnings`).
+fn designer_app(name: &str) -> (App, std::path::PathBuf, std::sync::MutexGuard<'static, ()>) {
+    let turn = crate::first_hour::CAPTURING
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
     let folder =
         std::env::temp_dir().join(format!("sprung-designer-{name}-{}", std::process::id()));
     std::fs::create_dir_all(folder.join("springs")).unwrap();
@@ -177,7 +183,7 @@ fn designer_app(name: &str) -> (App, std::path::PathBuf) {
     .add_plugins(SpringDesignerPlugin::default());
     app.finish();
     app.cleanup();
-    (app, folder)
+    (app, folder, turn)
 }
 
 fn wait_until(app: &mut App, done: impl Fn(&App) -> bool) {
@@ -191,7 +197,7 @@ fn wait_until(app: &mut App, done: impl Fn(&App) -> bool) {
 
 #[test]
 fn tuned_live_then_saved_the_running_app_takes_the_file() {
-    let (mut app, folder) = designer_app("save");
+    let (mut app, folder, _turn) = designer_app("save");
     let preset: Handle<SpringPreset> = app
         .world()
         .resource::<AssetServer>()
@@ -270,7 +276,7 @@ fn spawn_tuned(app: &mut App) -> Entity {
 /// The tuned spring's file changed by someone else (reloaded): the design follows it.
 #[test]
 fn a_tuned_spring_changed_elsewhere_comes_back_to_the_design() {
-    let (mut app, folder) = designer_app("follow");
+    let (mut app, folder, _turn) = designer_app("follow");
     let entity = spawn_tuned(&mut app);
     app.world_mut()
         .get_mut::<TranslationSpring>(entity)
@@ -288,7 +294,7 @@ fn a_tuned_spring_changed_elsewhere_comes_back_to_the_design() {
 /// and says so; nothing panics, and edits go on in the preview.
 #[test]
 fn a_tuned_spring_that_goes_away_is_let_go() {
-    let (mut app, folder) = designer_app("despawn");
+    let (mut app, folder, _turn) = designer_app("despawn");
     for removal in [true, false] {
         let entity = spawn_tuned(&mut app);
         assert!(app.world().resource::<TunedSpring>().0.is_some());

@@ -39,8 +39,9 @@ impl<S: Subscriber> Layer<S> for Logged {
     }
 }
 
-/// One test at a time installs a subscriber of its own (see [`warnings`]).
-static CAPTURING: Mutex<()> = Mutex::new(());
+/// One test at a time installs a subscriber of its own (see [`warnings`]); tests that reach
+/// the same warnings on other threads take turns with them.
+pub(crate) static CAPTURING: Mutex<()> = Mutex::new(());
 
 /// The bevy_sprung warnings logged while `setup` builds an app (every schedule on this thread)
 /// and it runs 30 frames.

@@ -30,9 +30,10 @@ mod plot;
 mod preview;
 
 use bevy::asset::io::file::FileAssetReader;
-use bevy::feathers::FeathersPlugins;
+use bevy::feathers::FeathersCorePlugin;
 use bevy::feathers::dark_theme::create_dark_theme;
 use bevy::feathers::theme::UiTheme;
+use bevy::input_focus::tab_navigation::TabNavigationPlugin;
 use bevy::prelude::*;
 
 pub use attach::{DesignerStatus, SaveSpringDesign, SpringRef, TuneSpring, TunedSpring};
@@ -45,9 +46,10 @@ use crate::ui::{UiTransformScale, UiTransformTranslation};
 /// Adds the spring designer (see the [module](self)): its panel, and tuning the springs of
 /// the running game.
 ///
-/// Add it after `DefaultPlugins` and [`SpringPlugins`](crate::SpringPlugins). It brings Bevy's
-/// `FeathersPlugins` if the app has none (with the dark theme). An app without Bevy's UI gets
-/// no panel and is told so once; [`SpringDesign`] and the events still work.
+/// Add it after `DefaultPlugins` and [`SpringPlugins`](crate::SpringPlugins). It adds the parts
+/// of Bevy's `FeathersPlugins` the app does not have yet (with the dark theme), so an app that
+/// already uses Bevy's widgets keeps its own. An app without Bevy's UI gets no panel and is
+/// told so once; [`SpringDesign`] and the events still work.
 ///
 /// # Example
 /// ```no_run
@@ -144,8 +146,13 @@ impl Plugin for SpringDesignerPlugin {
             );
             return;
         }
-        if !app.is_plugin_added::<bevy::feathers::FeathersCorePlugin>() {
-            app.add_plugins(FeathersPlugins)
+        // What `FeathersPlugins` adds, each part only if the app has none yet (adding a
+        // plugin twice panics, and a game may already use Bevy's widgets or tab navigation).
+        if !app.is_plugin_added::<TabNavigationPlugin>() {
+            app.add_plugins(TabNavigationPlugin);
+        }
+        if !app.is_plugin_added::<FeathersCorePlugin>() {
+            app.add_plugins(FeathersCorePlugin)
                 .insert_resource(UiTheme(create_dark_theme()));
         }
         let image = app
