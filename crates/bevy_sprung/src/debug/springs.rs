@@ -119,10 +119,7 @@ pub(super) fn draw_springs(
     let facing = label_rotation(&cameras);
     for (spring, motion, parent, asleep) in &springs {
         // The spring moves the local translation: the parent's transform puts it in the world.
-        let to_world = parent
-            .and_then(|parent| globals.get(parent.parent()).ok())
-            .copied()
-            .unwrap_or_default();
+        let to_world = parent_space(parent, &globals);
         let forecast = spring.forecast(motion);
         let here = to_world.transform_point(forecast.value_at(0.0));
         if asleep {
@@ -150,6 +147,18 @@ pub(super) fn draw_springs(
             settle_label(&mut gizmos, here, facing, settle, size * 1.5);
         }
     }
+}
+
+/// The parent's transform, which puts a spring's local value in the world (the identity for an
+/// entity without a parent, or one whose parent has no transform).
+pub(super) fn parent_space(
+    parent: Option<&ChildOf>,
+    globals: &Query<&GlobalTransform>,
+) -> GlobalTransform {
+    parent
+        .and_then(|parent| globals.get(parent.parent()).ok())
+        .copied()
+        .unwrap_or_default()
 }
 
 /// The seconds left until a spring at `here` settles (or "moving"), beside it, `size` high.

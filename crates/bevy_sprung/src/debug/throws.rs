@@ -4,7 +4,7 @@ use bevy::color::palettes::css;
 use bevy::gizmos::config::GizmoConfigGroup;
 use bevy::prelude::*;
 
-use super::springs::label_rotation;
+use super::springs::{label_rotation, parent_space};
 use crate::inertia::Inertia;
 use crate::spring::{SpringAsleep, SpringMotion};
 use crate::throw::{DragBounds, Snap};
@@ -112,13 +112,6 @@ pub(super) fn draw_drags(
             facing,
         );
     }
-}
-
-fn parent_space(parent: Option<&ChildOf>, globals: &Query<&GlobalTransform>) -> GlobalTransform {
-    parent
-        .and_then(|parent| globals.get(parent.parent()).ok())
-        .copied()
-        .unwrap_or_default()
 }
 
 /// The bounds (and their give) and the snap targets near `here`, from parent space.

@@ -4,23 +4,14 @@
 use bevy::color::palettes::css;
 use bevy::prelude::*;
 
-use super::springs::{PathSampling, SpringGizmos, UNSETTLED_HORIZON, label_rotation, settle_label};
+use super::springs::{
+    PathSampling, SpringGizmos, UNSETTLED_HORIZON, label_rotation, parent_space, settle_label,
+};
 use crate::spring::{SpringAsleep, SpringMotion};
 use crate::transform::{Rotation, RotationSpring, Scale, ScaleSpring};
 
 /// How long an orientation's pointer is, in markers ([`SpringGizmos::size`]).
 const POINTER: f32 = 4.0;
-
-/// The parent's transform, which puts a spring's local value in the world.
-fn parent_transform(
-    parent: Option<&ChildOf>,
-    globals: &Query<&GlobalTransform>,
-) -> GlobalTransform {
-    parent
-        .and_then(|parent| globals.get(parent.parent()).ok())
-        .copied()
-        .unwrap_or_default()
-}
 
 /// Draws every rotation spring as a pointer along the entity's local x axis: where it points
 /// now (white), where it is heading (gold), the path its tip will take to rest (exact), and the
@@ -45,7 +36,7 @@ pub(super) fn draw_rotations(
             continue;
         };
         let here = global.translation();
-        let turn = parent_transform(parent, &globals).rotation();
+        let turn = parent_space(parent, &globals).rotation();
         let tip = |rotation: Quat| here + turn * rotation * Vec3::X * length;
         let forecast = spring.forecast(motion);
         if asleep {
