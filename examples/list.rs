@@ -15,6 +15,9 @@
 //! - The wheel, a drag, or Space (a fling) scroll the list with momentum and rubber-band ends
 //!   ([`MomentumScroll`]).
 //! - Each change shows a toast that slides in, stays two seconds and slides out.
+//! - G shows the springs' guides (the debug overlay's UI group, [`UiSpringGizmos`]): each row
+//!   in flight drawn where it is and where layout puts it, with the path between; the list's
+//!   bounds, the give of its rubber band, its content and where a fling will rest.
 //!
 //! Without input the example plays a scripted tour, so CI screenshots show it.
 //!
@@ -22,7 +25,9 @@
 //! cargo run --example list
 //! ```
 
+use bevy::gizmos::config::GizmoConfigStore;
 use bevy::prelude::*;
+use bevy_sprung::debug::{SpringDebugPlugin, UiSpringGizmos};
 use bevy_sprung::prelude::*;
 use bevy_sprung::presence::StaggerChildren;
 use bevy_sprung::ui::{MomentumScroll, PopLayout};
@@ -96,6 +101,7 @@ fn main() {
                 ..default()
             }),
             SpringPlugins::default(),
+            SpringDebugPlugin::hidden().toggled_by(KeyCode::KeyG),
             TourPlugin::default(),
         ))
         .insert_resource(ClearColor(Color::srgb(0.06, 0.07, 0.09)))
@@ -132,7 +138,7 @@ fn main() {
 fn setup(mut commands: Commands) {
     commands.spawn(Camera2d);
     commands.spawn((
-        Text::new("A add   D remove   R last to top   F equipped only   Up/Down select   wheel, drag or Space to scroll"),
+        Text::new("A add   D remove   R last to top   F equipped only   Up/Down select   wheel, drag or Space to scroll   G guides"),
         TextFont::from_font_size(16.0),
         TextColor(TEXT.with_alpha(0.6)),
         Node { position_type: PositionType::Absolute, left: px(48.0), top: px(24.0), ..default() },
@@ -155,12 +161,14 @@ fn setup(mut commands: Commands) {
     ));
 }
 
-/// The tour: a few seconds of the list's changes, then a fling.
+/// The tour: a few seconds of the list's changes, then a fling; the guides shown for the last
+/// changes.
 fn tour(
     tour: Res<Tour>,
     mut inventory: ResMut<Inventory>,
     mut lists: Query<&mut MomentumScroll, With<List>>,
     mut toasts: MessageWriter<Toast>,
+    mut guides: ResMut<GizmoConfigStore>,
 ) {
     let at = |moment: f32| tour.passed(moment);
     let mut fling = |velocity: f32| {
@@ -173,6 +181,9 @@ fn tour(
     }
     if at(3.6) {
         fling(-2400.0);
+    }
+    if at(4.3) {
+        guides.config_mut::<UiSpringGizmos>().0.enabled = true;
     }
     let change = if at(2.2) || at(3.2) {
         toggle_filter(&mut inventory)

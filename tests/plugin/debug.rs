@@ -4,22 +4,26 @@
 
 use bevy::asset::AssetPlugin;
 use bevy::camera::{OrthographicProjection, Projection};
+use bevy::color::palettes::css;
 use bevy::gizmos::config::{GizmoConfigGroup, GizmoConfigStore};
 use bevy::gizmos::{GizmoAsset, GizmoHandles, GizmoPlugin};
 use bevy::input::ButtonState;
 use bevy::input::InputPlugin;
 use bevy::input::keyboard::{Key, KeyboardInput};
 use bevy::prelude::*;
+use bevy::ui::UiGlobalTransform;
 use bevy_sprung::camera::{CameraFraming, CameraTargets, Confiner, DeadZone};
 use bevy_sprung::chain::SpringChain;
 use bevy_sprung::debug::{
-    CameraRigGizmos, ChainGizmos, SpringDebugPlugin, SpringGizmos, ThrowGizmos,
+    CameraRigGizmos, ChainGizmos, SpringDebugPlugin, SpringGizmos, ThrowGizmos, UiSpringGizmos,
 };
 use bevy_sprung::inertia::{DragBounds, Inertia, Snap};
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::SpringMotion;
 
-use crate::harness::{app, primary_window};
+use bevy_sprung::ui::MomentumScroll;
+
+use crate::harness::{app, primary_window, run};
 
 /// A headless app at `fps` with the overlay (and what gizmos need: assets, input).
 fn overlay_app(fps: u32, overlay: SpringDebugPlugin) -> App {
@@ -115,14 +119,9 @@ fn the_drawn_path_is_the_path_the_spring_then_takes() {
             path.len()
         );
         // Each later frame puts the spring on the next point drawn (to rounding at ~2000 px).
-        for (frame, &point) in path.iter().enumerate().skip(1) {
-            app.update();
-            let taken = world_position(&app, spring);
-            assert!(
-                taken.distance(point) <= 512.0 * f32::EPSILON * 2500.0,
-                "{fps} fps, frame {frame}: drawn {point}, taken {taken}"
-            );
-        }
+        let tolerance = 512.0 * f32::EPSILON * 2500.0;
+        let taken = |app: &App| world_position(app, spring);
+        assert_follows(&mut app, &path, taken, tolerance, &format!("{fps} fps"));
     }
 }
 
@@ -366,14 +365,7 @@ fn a_rotation_springs_drawn_tip_path_is_the_turn_it_then_takes() {
             .into_iter()
             .find(|strip| strip.len() > 2 && strip[0].distance(now) < 1e-2)
             .unwrap_or_else(|| panic!("{fps} fps: no tip path drawn from {now}"));
-        for (frame, &point) in path.iter().enumerate().skip(1) {
-            app.update();
-            let taken = tip(&app);
-            assert!(
-                taken.distance(point) < 2e-3,
-                "{fps} fps, frame {frame}: drawn {point}, taken {taken}"
-            );
-        }
+        assert_follows(&mut app, &path, tip, 2e-3, &format!("{fps} fps"));
     }
 }
 
@@ -557,12 +549,403 @@ fn the_drawn_blend_is_the_path_the_camera_then_takes() {
         .find(|strip| strip.len() > 10 && strip[0].distance(here) < 1e-3)
         .unwrap_or_else(|| panic!("no blend path drawn from {here}"));
     assert!(path.len() > 20, "a blend of {} points", path.len());
-    for (frame, &point) in path.iter().enumerate().skip(1).take(60) {
+    let tolerance = 512.0 * f32::EPSILON * 1500.0;
+    let taken = |app: &App| world_position(app, camera);
+    assert_follows(&mut app, &path[..61], taken, tolerance, "blend");
+}
+
+/// Each later frame puts what `taken` reads on the next point of `path` (drawn the frame before
+/// the first of them), to `tolerance`.
+fn assert_follows(
+    app: &mut App,
+    path: &[Vec3],
+    taken: impl Fn(&App) -> Vec3,
+    tolerance: f32,
+    case: &str,
+) {
+    for (frame, &point) in path.iter().enumerate().skip(1) {
         app.update();
-        let taken = world_position(&app, camera);
+        let taken = taken(app);
         assert!(
-            taken.distance(point) <= 512.0 * f32::EPSILON * 1500.0,
-            "frame {frame}: drawn {point}, taken {taken}"
+            taken.distance(point) <= tolerance,
+            "{case}, frame {frame}: drawn {point}, taken {taken}"
         );
     }
+}
+
+/// The strips group `G` drew this frame in `color`, split at their separators.
+fn strips_in<G: GizmoConfigGroup>(app: &App, color: impl Into<LinearRgba>) -> Vec<Vec<Vec3>> {
+    let color = color.into();
+    let Some(buffer) = drawn::<G>(app) else {
+        return Vec::new();
+    };
+    let mut found = Vec::new();
+    let mut strip: Vec<Vec3> = Vec::new();
+    let mut matches = false;
+    for (&point, &drawn_in) in buffer.strip_positions.iter().zip(&buffer.strip_colors) {
+        if point.is_nan() {
+            if matches && !strip.is_empty() {
+                found.push(core::mem::take(&mut strip));
+            }
+            strip.clear();
+            continue;
+        }
+        if strip.is_empty() {
+            matches = drawn_in.to_vec4().distance(color.to_vec4()) < 1e-4;
+        }
+        strip.push(point);
+    }
+    if matches && !strip.is_empty() {
+        found.push(strip);
+    }
+    found
+}
+
+/// The UI test app (800×600, `bevy_ui`'s layout) with the overlay, its camera given the
+/// projection a renderer would: `perspective` puts a 3D camera at an angle, else the 2D one
+/// stays at the origin.
+fn ui_overlay_app(fps: u32, perspective: bool) -> App {
+    use bevy::camera::CameraProjection;
+    let mut app = crate::layout::ui_app(fps);
+    app.add_plugins((AssetPlugin::default(), InputPlugin))
+        .init_asset::<Mesh>()
+        .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>()
+        .add_plugins((GizmoPlugin, SpringDebugPlugin::default()));
+    let size = Vec2::new(crate::layout::WIDTH as f32, crate::layout::HEIGHT as f32);
+    let world = app.world_mut();
+    let camera = world
+        .query_filtered::<Entity, With<Camera>>()
+        .single(world)
+        .unwrap();
+    let mut entity = world.entity_mut(camera);
+    let clip_from_view = if perspective {
+        entity.insert(Transform::from_xyz(3.0, 2.0, 10.0).looking_at(Vec3::ZERO, Vec3::Y));
+        PerspectiveProjection {
+            aspect_ratio: size.x / size.y,
+            ..default()
+        }
+        .get_clip_from_view()
+    } else {
+        let mut projection = OrthographicProjection::default_2d();
+        projection.update(size.x, size.y);
+        projection.get_clip_from_view()
+    };
+    entity.get_mut::<Camera>().unwrap().computed.clip_from_view = clip_from_view;
+    app
+}
+
+/// The UI pixel a world point is drawn at, through the app's camera (Bevy's own projection).
+fn ui_pixel(app: &mut App, point: Vec3) -> Vec2 {
+    let world = app.world_mut();
+    let (camera, global) = world
+        .query::<(&Camera, &GlobalTransform)>()
+        .single(world)
+        .unwrap();
+    let ndc = camera.world_to_ndc(global, point).unwrap();
+    Vec2::new(
+        (ndc.x + 1.0) * 0.5 * crate::layout::WIDTH as f32,
+        (1.0 - ndc.y) * 0.5 * crate::layout::HEIGHT as f32,
+    )
+}
+
+/// A strip's corners in UI pixels, and the box they span.
+fn pixel_box(app: &mut App, strip: &[Vec3]) -> Rect {
+    let mut rect = Rect::EMPTY;
+    for &point in strip {
+        rect = rect.union_point(ui_pixel(app, point));
+    }
+    rect
+}
+
+/// How far outside a node's edges the UI group draws its boxes, in logical pixels (so that the
+/// node's background, drawn over the gizmos, does not hide them).
+const OUTSET: f32 = 2.0;
+
+/// The UI group's paths sampled at `fps`, the app's frames.
+fn ui_paths_at(app: &mut App, fps: u32) {
+    app.world_mut()
+        .resource_mut::<GizmoConfigStore>()
+        .config_mut::<UiSpringGizmos>()
+        .1
+        .path_step = 1.0 / fps as f32;
+}
+
+/// A 100 px node at (300, 200) scaled by 2: its children move twice as far on screen.
+fn scaled_parent(app: &mut App) -> Entity {
+    app.world_mut()
+        .spawn((
+            Node {
+                width: px(100.0),
+                height: px(100.0),
+                left: px(300.0),
+                top: px(200.0),
+                ..default()
+            },
+            UiTransform::from_scale(Vec2::splat(2.0)),
+        ))
+        .id()
+}
+
+/// The box spanned by the first strip the UI group drew in `color`, in UI pixels.
+fn first_box(app: &mut App, color: impl Into<LinearRgba>) -> Rect {
+    let strip = strips_in::<UiSpringGizmos>(app, color)
+        .into_iter()
+        .next()
+        .expect("a strip in that colour");
+    pixel_box(app, &strip)
+}
+
+/// A reordered column's moving item: its box is drawn where it is drawn and where layout puts
+/// it, and the path drawn for its centre is the one it then takes, frame by frame — with a 2D
+/// camera and a 3D one at an angle (checked through Bevy's own projection).
+#[test]
+fn a_layout_springs_boxes_and_path_are_where_it_is_drawn_and_placed() {
+    use crate::layout::{drawn as drawn_at, last_to_top, slot, spawn_column};
+    for perspective in [false, true] {
+        for fps in [30, 60, 144, 240] {
+            let mut app = ui_overlay_app(fps, perspective);
+            ui_paths_at(&mut app, fps);
+            let (column, items) = spawn_column(&mut app, 5, Spring::bouncy());
+            run(&mut app, 3);
+            last_to_top(&mut app, column);
+            app.update();
+            app.update();
+            let item = items[4];
+            let case = format!("{fps} fps, perspective {perspective}");
+            let gold = strips_in::<UiSpringGizmos>(&app, css::GOLD);
+            let placed = pixel_box(&mut app, &gold[0]);
+            let expected = Rect::from_center_size(slot(0), Vec2::new(200.0, 40.0)).inflate(OUTSET);
+            assert!(
+                placed.min.distance(expected.min) < 0.05
+                    && placed.max.distance(expected.max) < 0.05,
+                "{case}: placed box {placed:?}, layout puts it at {expected:?}"
+            );
+            let now = drawn_at(&app, item);
+            let aqua = strips_in::<UiSpringGizmos>(&app, css::AQUA);
+            let shown = aqua
+                .iter()
+                .find(|strip| strip.len() == 5)
+                .map(|strip| pixel_box(&mut app, strip))
+                .unwrap();
+            assert!(
+                shown.center().distance(now) < 0.05,
+                "{case}: drawn box at {:?}, the node at {now}",
+                shown.center()
+            );
+            let path: Vec<Vec2> = aqua
+                .iter()
+                .find(|strip| strip.len() > 5)
+                .unwrap()
+                .iter()
+                .map(|&point| ui_pixel(&mut app, point))
+                .collect();
+            assert!(
+                path[0].distance(now) < 0.05,
+                "{case}: path from {}",
+                path[0]
+            );
+            assert!(
+                path.len() > fps as usize / 4,
+                "{case}: {} points",
+                path.len()
+            );
+            let path: Vec<Vec3> = path.iter().map(|point| point.extend(0.0)).collect();
+            let taken = |app: &App| drawn_at(app, item).extend(0.0);
+            assert_follows(&mut app, &path, taken, 0.05, &case);
+        }
+    }
+}
+
+/// A fling's rest is drawn where the scroll then rests: inside, and at the end for a fling
+/// that would pass it; the area's give is drawn along the axis it scrolls.
+#[test]
+fn a_scrolls_drawn_rest_is_where_it_comes_to_rest() {
+    use crate::layout::{scroll_position, spawn_scroll_area, steer};
+    for (from, velocity) in [(1000.0, 800.0), (3600.0, 2500.0), (500.0, -2000.0)] {
+        let mut app = ui_overlay_app(60, false);
+        let (area, _) = spawn_scroll_area(&mut app, MomentumScroll::default());
+        run(&mut app, 3);
+        steer(&mut app, area, |scroll| scroll.drag_by(Vec2::Y * from));
+        app.update();
+        steer(&mut app, area, |scroll| scroll.fling(Vec2::Y * velocity));
+        app.update();
+        let case = format!("fling at {velocity} from {from}");
+        let rest_box = first_box(&mut app, css::MAGENTA);
+        let give = first_box(&mut app, css::YELLOW.with_alpha(0.35));
+        assert!(
+            (give.size() - Vec2::new(200.0, 200.0 + 2.0 * 120.0) - Vec2::splat(2.0 * OUTSET))
+                .length()
+                < 0.05,
+            "{case}: give {give:?}"
+        );
+        run(&mut app, 600);
+        let rest = scroll_position(&app, area);
+        // The content, 4000 px high, drawn with its top `rest` above the area's.
+        let expected = Rect::new(0.0, -rest, 200.0, 4000.0 - rest).inflate(OUTSET);
+        assert!(
+            rest_box.min.distance(expected.min) < 0.1 && rest_box.max.distance(expected.max) < 0.1,
+            "{case}: rest drawn at {rest_box:?}, came to rest at {expected:?}"
+        );
+        let shown = first_box(&mut app, css::AQUA.with_alpha(0.6));
+        assert!(
+            shown.min.distance(expected.min) < 0.1,
+            "{case}: shown {shown:?}"
+        );
+        assert!(
+            strips_in::<UiSpringGizmos>(&app, css::MAGENTA).is_empty(),
+            "{case}"
+        );
+    }
+}
+
+/// A `UiTransform` translation spring under a scaled parent: its path is drawn along the
+/// parent's axes and is the path its node then takes, and its target is drawn where it ends.
+#[test]
+fn a_ui_translation_springs_path_is_the_path_its_node_takes() {
+    for fps in [30, 60, 144, 240] {
+        let mut app = ui_overlay_app(fps, true);
+        ui_paths_at(&mut app, fps);
+        let parent = scaled_parent(&mut app);
+        let node = app
+            .world_mut()
+            .spawn((
+                Node {
+                    width: px(20.0),
+                    height: px(20.0),
+                    ..default()
+                },
+                UiTransformTranslationSpring::new(Spring::bouncy(), Val2::px(60.0, -30.0))
+                    .with_velocity(Vec2::new(-300.0, 200.0)),
+                ChildOf(parent),
+            ))
+            .id();
+        app.update();
+        app.update();
+        let case = format!("{fps} fps");
+        let path: Vec<Vec2> = strips_in::<UiSpringGizmos>(&app, css::AQUA)[0]
+            .iter()
+            .map(|&point| ui_pixel(&mut app, point))
+            .collect();
+        let centre = |app: &App| {
+            app.world()
+                .get::<UiGlobalTransform>(node)
+                .unwrap()
+                .translation
+        };
+        assert!(path[0].distance(centre(&app)) < 0.05, "{case}");
+        // The target's cross: its segments' ends, symmetric about its centre.
+        let gold = LinearRgba::from(css::GOLD);
+        let cross: Vec<Vec3> = drawn::<UiSpringGizmos>(&app)
+            .map(|buffer| {
+                buffer
+                    .list_positions
+                    .iter()
+                    .zip(&buffer.list_colors)
+                    .filter(|(_, color)| color.to_vec4().distance(gold.to_vec4()) < 1e-4)
+                    .map(|(&point, _)| point)
+                    .collect()
+            })
+            .unwrap_or_default();
+        assert_eq!(cross.len(), 6, "{case}: a cross of three segments");
+        let target = ui_pixel(&mut app, cross.iter().sum::<Vec3>() / 6.0);
+        let followed: Vec<Vec3> = path.iter().map(|point| point.extend(0.0)).collect();
+        let taken = |app: &App| centre(app).extend(0.0);
+        assert_follows(&mut app, &followed, taken, 0.05, &case);
+        run(&mut app, 2 * fps);
+        // At rest where the path ends and the cross is.
+        let end = *path.last().unwrap();
+        assert!(
+            centre(&app).distance(end) < 0.1,
+            "{case}: ends at {}",
+            centre(&app)
+        );
+        assert!(
+            centre(&app).distance(target) < 0.05,
+            "{case}: rests at {}, the target drawn at {target}",
+            centre(&app)
+        );
+    }
+}
+
+/// A UI drag's bounds and snap points are drawn in its translation's pixels, along its
+/// parent's axes (twice as large under a parent scaled by 2), around where it is drawn.
+#[test]
+fn a_ui_drags_bounds_and_snap_points_are_drawn_in_its_pixels() {
+    use bevy_sprung::interaction::SpringDrag;
+    let mut app = ui_overlay_app(60, true);
+    let parent = scaled_parent(&mut app);
+    let bounds = DragBounds {
+        min: Vec3::new(-50.0, -20.0, 0.0),
+        max: Vec3::new(70.0, 40.0, 0.0),
+        give: 10.0,
+    };
+    let node = app
+        .world_mut()
+        .spawn((
+            Node {
+                width: px(20.0),
+                height: px(20.0),
+                ..default()
+            },
+            UiTransform::from_translation(Val2::px(10.0, 0.0)),
+            UiTransformTranslationSpring::new(Spring::snappy(), Val2::px(10.0, 0.0)),
+            SpringDrag::new()
+                .bounded(bounds)
+                .snapping(Snap::Points(vec![Vec3::new(60.0, 30.0, 0.0)])),
+            ChildOf(parent),
+        ))
+        .id();
+    app.update();
+    app.update();
+    let centre = app
+        .world()
+        .get::<UiGlobalTransform>(node)
+        .unwrap()
+        .translation;
+    // Bounds from 60 px left of the node to 60 px right (twice (−50 − 10) and (70 − 10)).
+    let drawn = first_box(&mut app, css::YELLOW);
+    let expected = Rect::from_corners(
+        centre + 2.0 * Vec2::new(-60.0, -20.0),
+        centre + 2.0 * Vec2::new(60.0, 40.0),
+    );
+    assert!(
+        drawn.min.distance(expected.min) < 0.05 && drawn.max.distance(expected.max) < 0.05,
+        "bounds drawn {drawn:?}, expected {expected:?}"
+    );
+    let give = first_box(&mut app, css::YELLOW.with_alpha(0.35));
+    assert!((give.size() - expected.size() - Vec2::splat(40.0)).length() < 0.05);
+    let point = first_box(&mut app, css::DEEP_SKY_BLUE).center();
+    let expected_point = centre + 2.0 * Vec2::new(50.0, 30.0);
+    assert!(
+        point.distance(expected_point) < 0.05,
+        "snap point drawn at {point}, expected {expected_point}"
+    );
+}
+
+/// The world changing under a UI overlay: the camera despawned, a node despawned or its
+/// parent taken away mid-flight, all in one frame: nothing panics, and nothing is drawn for
+/// UI with no camera.
+#[test]
+fn ui_nodes_losing_their_camera_or_parent_mid_flight_break_nothing() {
+    use crate::layout::{last_to_top, spawn_column, spawn_scroll_area, steer};
+    let mut app = ui_overlay_app(60, false);
+    let (column, items) = spawn_column(&mut app, 5, Spring::bouncy());
+    let (area, _) = spawn_scroll_area(&mut app, MomentumScroll::default());
+    run(&mut app, 3);
+    last_to_top(&mut app, column);
+    steer(&mut app, area, |scroll| scroll.fling(Vec2::Y * 900.0));
+    app.update();
+    app.update();
+    assert!(!strips_in::<UiSpringGizmos>(&app, css::GOLD).is_empty());
+    app.world_mut().entity_mut(items[4]).despawn();
+    app.world_mut().entity_mut(items[2]).remove::<ChildOf>();
+    run(&mut app, 2);
+    let world = app.world_mut();
+    let camera = world
+        .query_filtered::<Entity, With<Camera>>()
+        .single(world)
+        .unwrap();
+    world.entity_mut(camera).despawn();
+    run(&mut app, 30);
+    assert!(drawn::<UiSpringGizmos>(&app).is_none_or(|buffer| buffer.strip_positions.is_empty()));
 }

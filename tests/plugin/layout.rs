@@ -16,12 +16,12 @@ use bevy_sprung::ui::{LayoutScale, LayoutTranslation};
 
 use crate::harness::{app, asleep, run};
 
-const WIDTH: u32 = 800;
-const HEIGHT: u32 = 600;
+pub(crate) const WIDTH: u32 = 800;
+pub(crate) const HEIGHT: u32 = 600;
 
 /// A headless app at `fps` with `bevy_ui`'s layout, as `UiPlugin` schedules it, on an 800×600
 /// target.
-fn ui_app(fps: u32) -> App {
+pub(crate) fn ui_app(fps: u32) -> App {
     let mut app = app(fps);
     app.add_plugins((
         HierarchyPropagatePlugin::<ComputedUiTargetCamera>::new(PostUpdate),
@@ -76,7 +76,7 @@ fn ui_app(fps: u32) -> App {
 }
 
 /// A column of `count` items 40 px high, each with a layout spring, and the column.
-fn spawn_column(app: &mut App, count: usize, spring: Spring) -> (Entity, Vec<Entity>) {
+pub(crate) fn spawn_column(app: &mut App, count: usize, spring: Spring) -> (Entity, Vec<Entity>) {
     let column = app
         .world_mut()
         .spawn(Node {
@@ -104,7 +104,7 @@ fn spawn_column(app: &mut App, count: usize, spring: Spring) -> (Entity, Vec<Ent
 }
 
 /// Where the node is drawn: its centre on screen.
-fn drawn(app: &App, entity: Entity) -> Vec2 {
+pub(crate) fn drawn(app: &App, entity: Entity) -> Vec2 {
     app.world()
         .get::<UiGlobalTransform>(entity)
         .unwrap()
@@ -112,12 +112,12 @@ fn drawn(app: &App, entity: Entity) -> Vec2 {
 }
 
 /// The centre of the `index`th 40 px item of a column at the top left.
-fn slot(index: usize) -> Vec2 {
+pub(crate) fn slot(index: usize) -> Vec2 {
     Vec2::new(100.0, 20.0 + 40.0 * index as f32)
 }
 
 /// Moves the column's last item to the top.
-fn last_to_top(app: &mut App, column: Entity) {
+pub(crate) fn last_to_top(app: &mut App, column: Entity) {
     let last = *app.world().get::<Children>(column).unwrap().last().unwrap();
     app.world_mut().entity_mut(column).insert_child(0, last);
 }
@@ -553,7 +553,7 @@ fn a_window_resize_springs_to_the_new_layout() {
 }
 
 /// A scroll area 200 px high over 100 rows of 40 px (it scrolls to 3800), with `scroll`.
-fn spawn_scroll_area(app: &mut App, scroll: MomentumScroll) -> (Entity, Entity) {
+pub(crate) fn spawn_scroll_area(app: &mut App, scroll: MomentumScroll) -> (Entity, Entity) {
     let area = app
         .world_mut()
         .spawn((
@@ -584,11 +584,11 @@ fn spawn_scroll_area(app: &mut App, scroll: MomentumScroll) -> (Entity, Entity) 
     (area, rows[0])
 }
 
-fn scroll_position(app: &App, area: Entity) -> f32 {
+pub(crate) fn scroll_position(app: &App, area: Entity) -> f32 {
     app.world().get::<ScrollPosition>(area).unwrap().y
 }
 
-fn steer(app: &mut App, area: Entity, input: impl FnOnce(&mut MomentumScroll)) {
+pub(crate) fn steer(app: &mut App, area: Entity, input: impl FnOnce(&mut MomentumScroll)) {
     input(&mut app.world_mut().get_mut::<MomentumScroll>(area).unwrap());
 }
 

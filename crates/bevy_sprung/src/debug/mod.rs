@@ -21,7 +21,11 @@
 //!   and bones, the rest pose they spring around, and its colliders;
 //! - **throws** ([`ThrowGizmos`]): each [`Inertia`](crate::inertia::Inertia)'s and drag's
 //!   bounds with the give of their rubber band, the points, lines or grid they snap to, and
-//!   where a moving throw will come to rest.
+//!   where a moving throw will come to rest;
+//! - **UI nodes** ([`UiSpringGizmos`], feature `ui`), in their own space, over the view of the
+//!   camera their UI is on: `UiTransform` translation springs' targets and paths, layout
+//!   springs' boxes where they are drawn and where layout puts them, scroll areas' bounds,
+//!   rubber band and rest, and UI drags' bounds and snap points.
 //!
 //! Each group is a Bevy [`GizmoConfigGroup`] of its own, drawn over the scene: turn one on or
 //! off, change its options or its line width, through [`GizmoConfigStore`] (or all at once, with a key:
@@ -36,11 +40,15 @@
 #[cfg(feature = "camera")]
 mod camera;
 mod chains;
+#[cfg(feature = "ui")]
+mod nodes;
 #[cfg(feature = "camera")]
 mod shots;
 mod springs;
 mod throws;
 mod turns;
+#[cfg(feature = "ui")]
+mod ui_space;
 
 use bevy::gizmos::config::{GizmoConfigGroup, GizmoConfigStore};
 use bevy::gizmos::{AppGizmoBuilder, GizmoPlugin};
@@ -50,6 +58,8 @@ use bevy::transform::TransformSystems;
 #[cfg(feature = "camera")]
 pub use camera::CameraRigGizmos;
 pub use chains::ChainGizmos;
+#[cfg(feature = "ui")]
+pub use nodes::UiSpringGizmos;
 pub use springs::SpringGizmos;
 pub use throws::ThrowGizmos;
 
@@ -159,6 +169,24 @@ impl Plugin for SpringDebugPlugin {
                     .in_set(SpringDebugSystems),
             );
         }
+        #[cfg(feature = "ui")]
+        {
+            // After the layout springs and rubber bands have drawn their nodes.
+            add_group::<UiSpringGizmos>(app, self.shown);
+            app.add_systems(
+                PostUpdate,
+                (
+                    nodes::draw_translations,
+                    nodes::draw_layouts,
+                    nodes::draw_scrolls,
+                    #[cfg(feature = "picking")]
+                    nodes::draw_drags,
+                )
+                    .run_if(is_shown::<UiSpringGizmos>)
+                    .after(bevy::ui::UiSystems::PostLayout)
+                    .in_set(SpringDebugSystems),
+            );
+        }
         if let Some(key) = self.toggle {
             app.add_systems(
                 PreUpdate,
@@ -196,11 +224,17 @@ fn toggle_all(store: &mut GizmoConfigStore) {
         || !store.config::<ThrowGizmos>().0.enabled;
     #[cfg(feature = "camera")]
     let hidden = hidden || !store.config::<CameraRigGizmos>().0.enabled;
+    #[cfg(feature = "ui")]
+    let hidden = hidden || !store.config::<UiSpringGizmos>().0.enabled;
     store.config_mut::<SpringGizmos>().0.enabled = hidden;
     store.config_mut::<ChainGizmos>().0.enabled = hidden;
     store.config_mut::<ThrowGizmos>().0.enabled = hidden;
     #[cfg(feature = "camera")]
     {
         store.config_mut::<CameraRigGizmos>().0.enabled = hidden;
+    }
+    #[cfg(feature = "ui")]
+    {
+        store.config_mut::<UiSpringGizmos>().0.enabled = hidden;
     }
 }

@@ -38,10 +38,10 @@ impl Default for ThrowGizmos {
 
 impl GizmoConfigGroup for ThrowGizmos {}
 
-/// How far a snap line is drawn each way from its origin, in sizes.
-const LINE_REACH: f32 = 200.0;
+/// How far a snap line is drawn each way from its origin, in markers.
+pub(super) const LINE_REACH: f32 = 200.0;
 /// How far ahead a rest point is looked for when the spring does not say when it settles.
-const REST_HORIZON: f32 = 60.0;
+pub(super) const REST_HORIZON: f32 = 60.0;
 
 /// What a throw may do: its bounds and snap, in the entity's parent space.
 pub(super) struct ThrowLimits<'a> {
@@ -74,7 +74,8 @@ pub(super) fn draw_inertia(
         };
         let forecast = spring.forecast(motion);
         let here = forecast.value_at(0.0);
-        draw_limits(&mut gizmos, &limits, here, to_world, facing);
+        let view = world_view(*gizmos.config_ext, to_world, facing);
+        draw_limits(&mut gizmos, &limits, here, &view);
         if !asleep {
             let end = forecast.settle_time().unwrap_or(REST_HORIZON);
             let rest = to_world.transform_point(forecast.value_at(end));
@@ -103,40 +104,62 @@ pub(super) fn draw_drags(
             bounds: drag.bounds,
             snap: &drag.snap,
         };
-        let to_world = parent_space(parent, &globals);
-        draw_limits(
-            &mut gizmos,
-            &limits,
-            transform.translation,
-            to_world,
-            facing,
-        );
+        let view = world_view(*gizmos.config_ext, parent_space(parent, &globals), facing);
+        draw_limits(&mut gizmos, &limits, transform.translation, &view);
     }
 }
 
-/// The bounds (and their give) and the snap targets near `here`, from parent space.
-fn draw_limits(
-    gizmos: &mut Gizmos<ThrowGizmos>,
+/// How the limits of a throw in a parent space are drawn in the world.
+fn world_view(
+    options: ThrowGizmos,
+    parent: GlobalTransform,
+    facing: Quat,
+) -> LimitsView<impl Fn(Vec3) -> Vec3> {
+    LimitsView {
+        to_world: move |point| parent.transform_point(point),
+        marker: options.size,
+        facing,
+        grid_reach: options.grid_reach,
+        line_reach: options.size * LINE_REACH,
+    }
+}
+
+/// How a throw's limits are drawn: where a point of its space is in the world, and the
+/// markers' look.
+pub(super) struct LimitsView<F: Fn(Vec3) -> Vec3> {
+    /// A point of the throw's space (its parent's, or a UI node's translation) in the world.
+    pub(super) to_world: F,
+    /// The size of a snap point's ring, in the world.
+    pub(super) marker: f32,
+    /// The rotation rings are drawn with (facing the camera).
+    pub(super) facing: Quat,
+    /// How many grid points are drawn each way around the entity.
+    pub(super) grid_reach: u8,
+    /// How far a snap line is drawn each way from its origin, in the throw's space.
+    pub(super) line_reach: f32,
+}
+
+/// The bounds (and their give) and the snap targets near `here`, from the throw's space.
+pub(super) fn draw_limits<G: GizmoConfigGroup>(
+    gizmos: &mut Gizmos<G>,
     limits: &ThrowLimits<'_>,
     here: Vec3,
-    to_world: GlobalTransform,
-    facing: Quat,
+    view: &LimitsView<impl Fn(Vec3) -> Vec3>,
 ) {
-    let size = gizmos.config_ext.size;
+    let world = &view.to_world;
     if let Some(bounds) = limits.bounds {
         let (low, high) = (bounds.min.min(bounds.max), bounds.max.max(bounds.min));
-        draw_box(gizmos, low, high, here.z, to_world, css::YELLOW);
+        draw_box(gizmos, low, high, here.z, world, css::YELLOW);
         if bounds.give > 0.0 {
             let give = Vec3::splat(bounds.give);
             let dim = css::YELLOW.with_alpha(0.35);
-            draw_box(gizmos, low - give, high + give, here.z, to_world, dim);
+            draw_box(gizmos, low - give, high + give, here.z, world, dim);
         }
     }
-    let point = |gizmos: &mut Gizmos<ThrowGizmos>, at: Vec3| {
-        let world = to_world.transform_point(at);
+    let point = |gizmos: &mut Gizmos<G>, at: Vec3| {
         gizmos.circle(
-            Isometry3d::new(world, facing),
-            size * 0.6,
+            Isometry3d::new(world(at), view.facing),
+            view.marker * 0.6,
             css::DEEP_SKY_BLUE,
         );
     };
@@ -149,17 +172,17 @@ fn draw_limits(
         }
         Snap::Lines(lines) => {
             for line in lines {
-                let reach = line.direction.normalize_or_zero() * size * LINE_REACH;
+                let reach = line.direction.normalize_or_zero() * view.line_reach;
                 gizmos.line(
-                    to_world.transform_point(line.origin - reach),
-                    to_world.transform_point(line.origin + reach),
+                    world(line.origin - reach),
+                    world(line.origin + reach),
                     css::DEEP_SKY_BLUE,
                 );
             }
         }
         Snap::Grid { spacing, .. } => {
             // The grid points around the one nearest the entity, in the x–y plane.
-            let reach = i32::from(gizmos.config_ext.grid_reach);
+            let reach = i32::from(view.grid_reach);
             let nearest = limits.snap.choose(here, here).0;
             for i in -reach..=reach {
                 for j in -reach..=reach {
@@ -173,14 +196,14 @@ fn draw_limits(
     }
 }
 
-/// An axis-aligned box of parent space in the world; flat (a rectangle at `z`) if its depth is
-/// not finite or zero, as a 2D bound is.
-fn draw_box(
-    gizmos: &mut Gizmos<ThrowGizmos>,
+/// An axis-aligned box of the throw's space in the world; flat (a rectangle at `z`) if its
+/// depth is not finite or zero, as a 2D bound is.
+fn draw_box<G: GizmoConfigGroup>(
+    gizmos: &mut Gizmos<G>,
     low: Vec3,
     high: Vec3,
     z: f32,
-    to_world: GlobalTransform,
+    world: impl Fn(Vec3) -> Vec3,
     color: impl Into<Color> + Copy,
 ) {
     let flat = !(high.z - low.z).is_finite() || high.z <= low.z;
@@ -195,7 +218,6 @@ fn draw_box(
         Vec3::new(high.x, high.y, low.z),
         Vec3::new(low.x, high.y, low.z),
     ];
-    let world = |corner: Vec3| to_world.transform_point(corner);
     gizmos.linestrip(
         corners.iter().chain(&corners[..1]).map(|&c| world(c)),
         color,

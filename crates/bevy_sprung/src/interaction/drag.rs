@@ -357,7 +357,7 @@ type Body = (
 
 /// A UI translation in pixels (another unit counts as 0: drags move pixels).
 #[cfg(feature = "ui")]
-fn pixels(value: Val2) -> Vec3 {
+pub(crate) fn pixels(value: Val2) -> Vec3 {
     let px = |v: Val| if let Val::Px(x) = v { x } else { 0.0 };
     Vec3::new(px(value.x), px(value.y), 0.0)
 }

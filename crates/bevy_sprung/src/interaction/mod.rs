@@ -19,6 +19,8 @@ mod drag;
 mod state;
 
 pub use crate::throw::{DragBounds, ReleaseVelocity, Snap, SnapLine};
+#[cfg(feature = "ui")]
+pub(crate) use drag::pixels;
 pub use drag::{DragFollow, DragReleased, SpringDrag};
 pub use state::{InteractionState, InteractionSystems, PointerContacts};
 

@@ -13,6 +13,7 @@ pub use layout::{
     LayoutOffset, LayoutScale, LayoutScaleSpring, LayoutSpring, LayoutTranslation,
     LayoutTranslationSpring, PopLayout,
 };
+pub(crate) use scroll::ScrollExtent;
 pub use scroll::{MomentumScroll, ScrollMotion, ScrollOffset, ScrollOffsetSpring, ScrollSettled};
 
 use core::any::TypeId;

@@ -206,13 +206,26 @@ pub struct ScrollMotion {
 
 /// A scroll area's extent, from its last layout, and how it moves.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
-pub(super) struct ScrollExtent {
+pub(crate) struct ScrollExtent {
     /// The largest scroll position (logical pixels).
     max: Vec2,
     /// How it moves.
     mode: ScrollMode,
     /// How far past an end the content is shown (logical pixels of scroll).
     shown_past: Vec2,
+}
+
+impl ScrollExtent {
+    /// The largest scroll position (logical pixels), from the area's last layout.
+    pub(crate) fn max(&self) -> Vec2 {
+        self.max
+    }
+
+    /// How far past an end the content is shown, by the rubber band (logical pixels of
+    /// scroll).
+    pub(crate) fn shown_past(&self) -> Vec2 {
+        self.shown_past
+    }
 }
 
 /// How a scroll area moves.
