@@ -8,7 +8,7 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 
 use bevy_sprung::camera::{
-    CameraGoal, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
+    CameraFraming, CameraGoal, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
 };
 use bevy_sprung::camera::{CameraRigSystems, RigHorizontal, RigMotion, RigVertical};
 use bevy_sprung::prelude::*;
@@ -1294,4 +1294,188 @@ fn a_rig_far_from_the_origin_follows_at_the_lag_f32_resolves() {
             "{fps} fps: {behind} vs {expected}"
         );
     }
+}
+
+/// A dead zone whose sides are set on their own: the player walks 150 px right without moving
+/// the camera (its right side reaches 160), but the camera follows 100 px left (its left side
+/// reaches 40) and rests with the player on that edge; up and down likewise.
+#[test]
+fn a_dead_zone_with_sides_of_its_own_holds_further_one_way() {
+    use bevy_sprung::camera::ZoneSides;
+    for fps in RATES {
+        let (mut app, player) =
+            camera_app(fps, (800, 600), |t| Vec3::new(150.0 * t.min(1.0), 0.0, 0.0));
+        let sides = ZoneSides {
+            left: 40.0,
+            right: 160.0,
+            down: 10.0,
+            up: 70.0,
+        };
+        let camera = app
+            .world_mut()
+            .spawn((
+                camera_2d(CameraRig::new(Spring::smooth())),
+                CameraTargets::single(player),
+                DeadZone::world_sides(sides),
+            ))
+            .id();
+        app.update();
+        let start = translation(&app, camera);
+        for _ in 0..fps * 2 {
+            app.update();
+        }
+        assert_eq!(translation(&app, camera), start, "{fps} fps: moved inside");
+        // Past the left and the bottom sides: it rests with the player on those edges.
+        app.insert_resource(Path(|_| Vec3::new(-100.0, -50.0, 0.0)));
+        for _ in 0..fps * 4 {
+            app.update();
+        }
+        let rest = translation(&app, camera).truncate();
+        let expected = Vec2::new(-100.0 + 40.0, -50.0 + 10.0);
+        assert!(rest.distance(expected) < 0.01, "{fps} fps: {rest}");
+        // 10 right and 70 up from there, inside the zone (70 above the anchor plus the 10
+        // it was below): held.
+        app.insert_resource(Path(|_| Vec3::new(-90.0, 20.0, 0.0)));
+        for _ in 0..fps * 2 {
+            app.update();
+        }
+        assert!(translation(&app, camera).truncate().distance(expected) < 0.01);
+        let framing = *app.world().get::<CameraFraming>(camera).unwrap();
+        assert!(!framing.pushes_dead_zone(), "{fps} fps: pushing inside");
+        assert_eq!(framing.dead_zone(), Vec3::new(100.0, 40.0, 100.0));
+        assert_eq!(
+            framing.dead_zone_centre() - framing.held(),
+            Vec3::new(60.0, 30.0, 0.0)
+        );
+    }
+}
+
+/// The zone events a rig sent, in order, by name.
+#[derive(Resource, Default)]
+struct ZoneEvents(Vec<(&'static str, Entity)>);
+
+/// Records every zone event into [`ZoneEvents`].
+fn record_zone_events(app: &mut App) {
+    use bevy_sprung::camera::{
+        ConfinerEdgeLeft, ConfinerEdgeReached, DeadZoneEntered, DeadZoneExited,
+    };
+    app.init_resource::<ZoneEvents>()
+        .add_observer(|event: On<DeadZoneExited>, mut all: ResMut<ZoneEvents>| {
+            all.0.push(("exited", event.entity));
+        })
+        .add_observer(|event: On<DeadZoneEntered>, mut all: ResMut<ZoneEvents>| {
+            all.0.push(("entered", event.entity));
+        })
+        .add_observer(
+            |event: On<ConfinerEdgeReached>, mut all: ResMut<ZoneEvents>| {
+                all.0.push(("edge", event.entity));
+            },
+        )
+        .add_observer(|event: On<ConfinerEdgeLeft>, mut all: ResMut<ZoneEvents>| {
+            all.0.push(("off edge", event.entity));
+        });
+}
+
+/// Right to the level's edge and back: still, then 400 px/s right to 600, held there, then
+/// back to 0 in a second.
+fn to_the_edge_and_back(t: f32) -> Vec3 {
+    let x = match t {
+        t if t < 0.5 => 0.0,
+        t if t < 2.0 => 400.0 * (t - 0.5),
+        t if t < 4.0 => 600.0,
+        t if t < 5.0 => 600.0 - 600.0 * (t - 4.0),
+        _ => 0.0,
+    };
+    Vec3::new(x, 0.0, 0.0)
+}
+
+/// An app whose player follows `path`, recording zone events, and a 2D rig with a dead zone
+/// 200 × 100 around it.
+fn zone_app(path: fn(f32) -> Vec3) -> (App, Entity) {
+    let (mut app, player) = camera_app(60, (800, 600), path);
+    record_zone_events(&mut app);
+    let camera = app
+        .world_mut()
+        .spawn((
+            camera_2d(CameraRig::new(Spring::snappy())),
+            CameraTargets::single(player),
+            DeadZone::world(Vec2::new(200.0, 100.0)),
+        ))
+        .id();
+    (app, camera)
+}
+
+/// The player runs past the dead zone to the confiner's edge and back: each crossing is told
+/// once, in order — out of the zone, at the edge, back inside, out of its other side, off the
+/// edge — at every frame pattern and through a 1 s hitch.
+#[test]
+fn zone_events_are_told_once_per_crossing() {
+    let expected = ["exited", "edge", "entered", "exited", "off edge"];
+    let mut patterns = patterns();
+    // A 1 s hitch while the player runs (Bevy caps a frame at 0.25 s of game time).
+    patterns.push(vec![1.0 / 60.0; 60].into_iter().chain([1.0]).collect());
+    for pattern in patterns {
+        let (mut app, camera) = zone_app(to_the_edge_and_back);
+        let level = Rect::new(-600.0, -400.0, 600.0, 400.0);
+        app.world_mut()
+            .entity_mut(camera)
+            .insert(Confiner::new(level).with_slowing_distance(50.0));
+        run_pattern(&mut app, &pattern, 8.0, |_, _| {});
+        let told: Vec<&str> = app
+            .world()
+            .resource::<ZoneEvents>()
+            .0
+            .iter()
+            .map(|&(name, entity)| {
+                assert_eq!(entity, camera);
+                name
+            })
+            .collect();
+        assert_eq!(told, expected, "{pattern:?}");
+    }
+}
+
+/// A rig despawned in the frame its player leaves the zone is told nothing, then or after;
+/// and of two crossings in one frame, a rig the game despawns on the first is not told the
+/// second.
+#[test]
+fn zone_events_are_never_told_to_a_despawned_rig() {
+    let (mut app, camera) = zone_app(to_the_edge_and_back);
+    // Between the frame that finds the player out of the zone and the one that tells it.
+    let despawn_when_out = move |rigs: Query<&CameraFraming>, mut commands: Commands| {
+        if rigs.get(camera).is_ok_and(CameraFraming::pushes_dead_zone) {
+            commands.entity(camera).despawn();
+        }
+    };
+    app.add_systems(
+        SpringUpdate,
+        despawn_when_out
+            .after(CameraRigSystems::Frame)
+            .before(CameraRigSystems::Compose),
+    );
+    for _ in 0..8 * 60 {
+        app.update();
+    }
+    assert!(app.world().get_entity(camera).is_err());
+    assert!(app.world().resource::<ZoneEvents>().0.is_empty());
+
+    // The player jumps out of the zone as a confiner smaller than the view is added.
+    let (mut app, camera) = zone_app(|_| Vec3::ZERO);
+    app.world_mut().entity_mut(camera).observe(
+        |exited: On<bevy_sprung::camera::DeadZoneExited>, mut commands: Commands| {
+            commands.entity(exited.entity).despawn();
+        },
+    );
+    for _ in 0..30 {
+        app.update();
+    }
+    app.insert_resource(Path(|_| Vec3::new(500.0, 0.0, 0.0)));
+    app.world_mut()
+        .entity_mut(camera)
+        .insert(Confiner::new(Rect::new(-10.0, -10.0, 10.0, 10.0)));
+    for _ in 0..30 {
+        app.update();
+    }
+    assert!(app.world().get_entity(camera).is_err());
+    assert_eq!(app.world().resource::<ZoneEvents>().0, [("exited", camera)]);
 }

@@ -389,14 +389,48 @@ pub enum ZoneUnit {
 /// the camera after it: the soft zone). While the point moves inside it, the camera is at rest,
 /// asleep, and its `Transform` is not written.
 ///
-/// The size is the whole width and height (horizontal along x and z, vertical along y).
+/// The size is the whole width and height (horizontal along x and z, vertical along y). The
+/// zone is centred on its anchor (where the [`ScreenPosition`] puts the framed point) unless
+/// [`offset`](Self::offset) moves it: its four sides are then set on their own
+/// ([`view_sides`](Self::view_sides), [`world_sides`](Self::world_sides)), as a platformer that
+/// lets the player walk further right than left before the camera moves.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::camera::{DeadZone, ZoneSides};
+///
+/// // The player walks a third of the view to the right, a tenth to the left, before the
+/// // camera follows; up and down a twentieth.
+/// let zone = DeadZone::view_sides(ZoneSides { left: 0.1, right: 0.33, down: 0.05, up: 0.05 });
+/// assert_eq!(zone.sides(), ZoneSides { left: 0.1, right: 0.33, down: 0.05, up: 0.05 });
+/// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
 #[reflect(Component, Debug, Clone, PartialEq)]
 pub struct DeadZone {
     /// Width and height of the zone.
     pub size: Vec2,
-    /// What `size` is measured in.
+    /// How far the zone's centre is from its anchor, in the same unit (positive: right and
+    /// up). Zero for a zone centred on the point it holds.
+    pub offset: Vec2,
+    /// What `size` and `offset` are measured in.
     pub unit: ZoneUnit,
+}
+
+/// How far a [`DeadZone`] reaches from its anchor toward each side, in its unit: the framed
+/// point moves that far left (−x), right (+x), down (−y) or up (+y) before the camera
+/// follows.
+#[derive(Reflect, Debug, Clone, Copy, PartialEq, Default)]
+#[reflect(Debug, Clone, PartialEq, Default)]
+pub struct ZoneSides {
+    /// Toward −x.
+    pub left: f32,
+    /// Toward +x.
+    pub right: f32,
+    /// Toward −y.
+    pub down: f32,
+    /// Toward +y.
+    pub up: f32,
 }
 
 impl DeadZone {
@@ -405,6 +439,7 @@ impl DeadZone {
     pub fn view(size: Vec2) -> Self {
         Self {
             size,
+            offset: Vec2::ZERO,
             unit: ZoneUnit::View,
         }
     }
@@ -414,7 +449,56 @@ impl DeadZone {
     pub fn world(size: Vec2) -> Self {
         Self {
             size,
+            offset: Vec2::ZERO,
             unit: ZoneUnit::World,
+        }
+    }
+
+    /// A zone whose sides are `sides` fractions of the view's width (left, right) and height
+    /// (down, up) from its anchor.
+    #[must_use]
+    pub fn view_sides(sides: ZoneSides) -> Self {
+        Self::from_sides(sides, ZoneUnit::View)
+    }
+
+    /// A zone whose sides are `sides` world units from its anchor.
+    #[must_use]
+    pub fn world_sides(sides: ZoneSides) -> Self {
+        Self::from_sides(sides, ZoneUnit::World)
+    }
+
+    fn from_sides(sides: ZoneSides, unit: ZoneUnit) -> Self {
+        Self {
+            size: Vec2::new(sides.left + sides.right, sides.down + sides.up),
+            offset: 0.5 * Vec2::new(sides.right - sides.left, sides.up - sides.down),
+            unit,
+        }
+    }
+
+    /// How far the zone reaches from its anchor toward each side, in its unit.
+    #[must_use]
+    pub fn sides(&self) -> ZoneSides {
+        let half = 0.5 * self.size;
+        ZoneSides {
+            left: half.x - self.offset.x,
+            right: half.x + self.offset.x,
+            down: half.y - self.offset.y,
+            up: half.y + self.offset.y,
+        }
+    }
+
+    /// The zone's centre from its anchor in world units (x and y; a 3D zone is centred along
+    /// z), for a view of `half_view` half extents. Non-finite offsets count as 0.
+    #[must_use]
+    pub fn offset_in(&self, half_view: Vec2) -> Vec2 {
+        let offset = match self.unit {
+            ZoneUnit::View => self.offset * 2.0 * half_view,
+            ZoneUnit::World => self.offset,
+        };
+        if offset.is_finite() {
+            offset
+        } else {
+            Vec2::ZERO
         }
     }
 
@@ -843,6 +927,16 @@ pub(crate) struct RigTracking {
     pub(crate) warp: Vec3,
     /// The goal was carried this frame: the centre keeps last frame's velocity.
     pub(crate) warped: bool,
+    /// Where the rig stood against its zones last frame, for their events.
+    pub(crate) contact: Option<ZoneContact>,
+}
+
+/// Where a rig stands against its zones: whether its framed point pushes its dead zone, and
+/// whether its camera is at its confiner's edge.
+#[derive(Reflect, Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct ZoneContact {
+    pub(crate) pushes_dead_zone: bool,
+    pub(crate) at_confiner_edge: bool,
 }
 
 impl RigTracking {

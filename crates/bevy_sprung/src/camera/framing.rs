@@ -28,6 +28,7 @@ pub struct CameraFraming {
     pub(super) point: Vec3,
     pub(super) held: Vec3,
     pub(super) dead_zone: Vec3,
+    pub(super) dead_zone_offset: Vec3,
     pub(super) half_view: Vec2,
     pub(super) centre: Vec3,
 }
@@ -47,8 +48,9 @@ impl CameraFraming {
         self.point
     }
 
-    /// Where the dead zone holds the framed point: the zone's centre, which sits at the
-    /// [`ScreenPosition`](super::ScreenPosition). The point itself without a dead zone.
+    /// Where the dead zone holds the framed point: the zone's anchor, which sits at the
+    /// [`ScreenPosition`](super::ScreenPosition) (its centre, for a zone without an
+    /// [`offset`](super::DeadZone::offset)). The point itself without a dead zone.
     #[inline]
     #[must_use]
     pub fn held(&self) -> Vec3 {
@@ -56,19 +58,27 @@ impl CameraFraming {
     }
 
     /// The dead zone's half extents (x along the world's x, y along y, z along z; zero
-    /// without a zone): the framed point moves within `held ± dead_zone` without moving the
-    /// camera.
+    /// without a zone): the framed point moves within `dead_zone_centre() ± dead_zone` without
+    /// moving the camera.
     #[inline]
     #[must_use]
     pub fn dead_zone(&self) -> Vec3 {
         self.dead_zone
     }
 
+    /// The dead zone's centre: the anchor ([`held`](Self::held)) moved by the zone's
+    /// [`offset`](super::DeadZone::offset).
+    #[inline]
+    #[must_use]
+    pub fn dead_zone_centre(&self) -> Vec3 {
+        self.held + self.dead_zone_offset
+    }
+
     /// Whether the framed point is on an edge of the dead zone (to rounding): it pushes the
     /// zone, and the camera follows. `false` without a dead zone.
     #[must_use]
     pub fn pushes_dead_zone(&self) -> bool {
-        let reach = (self.point - self.held).abs();
+        let reach = (self.point - self.dead_zone_centre()).abs();
         self.dead_zone != Vec3::ZERO && reach.cmpge(self.dead_zone * (1.0 - 1e-4)).any()
     }
 

@@ -14,6 +14,7 @@ mod framing;
 mod occlusion;
 mod systems;
 mod view;
+mod zones;
 
 use core::any::TypeId;
 
@@ -27,13 +28,14 @@ pub use components::{
     CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, ConfinerVolume, DeadZone,
     GroupFraming, LookAhead, OrbitRig, RigHorizontal, RigHorizontalSpring, RigLookAhead,
     RigLookAheadSpring, RigMotion, RigOrbit, RigOrbitSpring, RigVertical, RigVerticalSpring,
-    RigZoom, RigZoomSpring, ScreenPosition, ZoneUnit,
+    RigZoom, RigZoomSpring, ScreenPosition, ZoneSides, ZoneUnit,
 };
 #[cfg(feature = "camera_occlusion")]
 pub use components::{RigClearance, RigClearanceSpring};
 pub use framing::CameraFraming;
 #[cfg(feature = "camera_occlusion")]
 pub use occlusion::CameraOcclusion;
+pub use zones::{ConfinerEdgeLeft, ConfinerEdgeReached, DeadZoneEntered, DeadZoneExited};
 
 use crate::property_plugin::SpringPropertyPlugin;
 use crate::spring::{
@@ -85,6 +87,7 @@ impl Plugin for SpringCameraPlugin {
         .register_type::<CameraTargets>()
         .register_type::<LookAhead>()
         .register_type::<DeadZone>()
+        .register_type::<ZoneSides>()
         .register_type::<ScreenPosition>()
         .register_type::<Confiner>()
         .register_type::<ConfinerVolume>()
@@ -151,7 +154,11 @@ impl Plugin for SpringCameraPlugin {
                         systems::sample_targets.in_set(CameraRigSystems::Targets),
                         systems::track_goals.in_set(CameraRigSystems::Track),
                         systems::frame_goals.in_set(CameraRigSystems::Frame),
-                        (systems::compose_cameras, systems::zoom_projections)
+                        (
+                            systems::compose_cameras,
+                            systems::zoom_projections,
+                            zones::announce_zones,
+                        )
                             .chain()
                             .in_set(CameraRigSystems::Compose),
                     )

@@ -298,15 +298,19 @@ pub(super) fn frame_goals(
         // The dead zone holds the goal until the point leaves the zone around it: the goal is
         // dragged along by the zone's edge (a backlash, the same for any frame rate).
         // Without a zone its half extents are zero, and the point itself is held.
-        let half = rig.dead_zone.map_or(Vec3::ZERO, |zone| {
+        // A zone off its anchor holds the anchor as far from the point as the zone's centre
+        // is from the anchor.
+        let (half, offset) = rig.dead_zone.map_or((Vec3::ZERO, Vec3::ZERO), |zone| {
             let half = zone.half_size(half_view);
-            Vec3::new(half.x, half.y, half.x)
+            let offset = zone.offset_in(half_view);
+            (Vec3::new(half.x, half.y, half.x), offset.extend(0.0))
         });
+        let anchor = point - offset;
         let held = rig
             .tracking
             .held
             .unwrap_or(point)
-            .clamp(point - half, point + half);
+            .clamp(anchor - half, anchor + half);
         rig.tracking.held = Some(held);
 
         let shift = rig.screen.map_or(Vec3::ZERO, |screen| {
@@ -337,6 +341,7 @@ pub(super) fn frame_goals(
             point,
             held,
             dead_zone: half,
+            dead_zone_offset: offset,
             half_view,
             centre,
         };
@@ -454,6 +459,25 @@ impl PosedItem<'_, '_> {
 }
 
 impl PosedItem<'_, '_> {
+    /// Whether the camera of a rig whose springs hold `motion` stands at its [`Confiner`]'s
+    /// edge on some axis: its eased view within [`EDGE_TOLERANCE`] of the view's size from
+    /// the bounds. `false` without a confiner.
+    pub(super) fn at_confiner_edge(&self, motion: &RigMotion, window: Option<&Window>) -> bool {
+        let Some(confiner) = self.confiner else {
+            return false;
+        };
+        let distance = base_distance(self.rig, self.orbit, motion);
+        let area = camera_view_area(&self.view, window, motion.zoom(), distance);
+        let range = centre_range(confiner.bounds, area);
+        let tolerance = EDGE_TOLERANCE * area.size().max_element();
+        let centre = motion.centre();
+        (0..2).any(|axis| {
+            let (low, high) = (range.min[axis], range.max[axis]);
+            let eased = ease_into(centre[axis], low, high, confiner.slowing_distance);
+            eased - low <= tolerance || high - eased <= tolerance
+        })
+    }
+
     /// Where the camera of `pose` is with `clearance` of its arm clear: on the arm, eased into
     /// its [`ConfinerVolume`].
     pub(super) fn place(&self, pose: &RigPose, clearance: f32) -> Vec3 {
@@ -471,6 +495,10 @@ impl PosedItem<'_, '_> {
         translation
     }
 }
+
+/// How near a confiner's bounds a camera's view is at their edge, as a fraction of the view's
+/// size: well under a pixel for views a few thousand pixels wide.
+const EDGE_TOLERANCE: f32 = 1e-4;
 
 /// After the springs stepped: the camera's translation and rotation, written only where they
 /// change. An occluder's pull (the clearance) shortens the arm.

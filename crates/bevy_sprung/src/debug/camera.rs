@@ -127,8 +127,8 @@ pub(super) fn draw_rigs(
     }
 }
 
-/// The dead zone: a box of the zone's half extents around the held point (a rectangle
-/// seen from a 2D camera).
+/// The dead zone: a box of the zone's half extents around its centre (a rectangle seen from a
+/// 2D camera), and a cross on its anchor, the held point.
 fn draw_dead_zone(gizmos: &mut Gizmos<CameraRigGizmos>, framing: &CameraFraming) {
     let half = framing.dead_zone();
     if half == Vec3::ZERO {
@@ -140,7 +140,7 @@ fn draw_dead_zone(gizmos: &mut Gizmos<CameraRigGizmos>, framing: &CameraFraming)
         css::LIME
     };
     gizmos.cube(
-        Transform::from_translation(framing.held()).with_scale(2.0 * half),
+        Transform::from_translation(framing.dead_zone_centre()).with_scale(2.0 * half),
         color,
     );
     gizmos.cross(
