@@ -400,10 +400,12 @@ pub enum ZoneUnit {
 /// use bevy::prelude::*;
 /// use bevy_sprung::camera::{DeadZone, ZoneSides};
 ///
-/// // The player walks a third of the view to the right, a tenth to the left, before the
-/// // camera follows; up and down a twentieth.
-/// let zone = DeadZone::view_sides(ZoneSides { left: 0.1, right: 0.33, down: 0.05, up: 0.05 });
-/// assert_eq!(zone.sides(), ZoneSides { left: 0.1, right: 0.33, down: 0.05, up: 0.05 });
+/// // The player walks three eighths of the view to the right, an eighth to the left, before
+/// // the camera follows; up and down a sixteenth.
+/// let sides = ZoneSides { left: 0.125, right: 0.375, down: 0.0625, up: 0.0625 };
+/// let zone = DeadZone::view_sides(sides);
+/// assert_eq!(zone.size, Vec2::new(0.5, 0.125));
+/// assert_eq!(zone.sides(), sides);
 /// ```
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
 #[reflect(Component, Debug, Clone, PartialEq)]
@@ -475,7 +477,8 @@ impl DeadZone {
         }
     }
 
-    /// How far the zone reaches from its anchor toward each side, in its unit.
+    /// How far the zone reaches from its anchor toward each side, in its unit (the sides it
+    /// was made from, to rounding).
     #[must_use]
     pub fn sides(&self) -> ZoneSides {
         let half = 0.5 * self.size;
@@ -515,6 +518,98 @@ impl DeadZone {
         } else {
             Vec2::ZERO
         }
+    }
+}
+
+/// An outer limit that keeps the goal's point (the target, without look-ahead) on screen when
+/// it outruns the follow spring (a dash, a fall): a rectangle `size` wide and high, centred on
+/// the view, that the point never leaves.
+///
+/// Cinemachine clamps at its hard limits, a jump in the camera's velocity. Here the camera is
+/// carried along instead: over the [`slowing`](Self::slowing) band inside the limit, the
+/// point's offset from the view is eased by a smooth map whose slope falls from 1 to 0 (the
+/// confiner's map), so the camera's velocity changes continuously and its acceleration stays
+/// bounded: by twice the target's acceleration, plus the follow spring's own, plus
+/// `v²/(2·slowing)` for the point's speed `v` relative to the spring. A `slowing` of 0 is
+/// Cinemachine's clamp. Horizontal along x, vertical along y, as a [`DeadZone`]; a
+/// [`Confiner`] still has the last word.
+///
+/// # Example
+/// ```
+/// use bevy::prelude::*;
+/// use bevy_sprung::camera::{CameraTargets, HardLimit};
+/// use bevy_sprung::prelude::*;
+///
+/// fn camera_following(player: Entity) -> impl Bundle {
+///     (
+///         Camera2d,
+///         CameraRig::new(Spring::smooth()),
+///         CameraTargets::single(player),
+///         // The player never gets closer to the window's edge than a twentieth of it.
+///         HardLimit::view(Vec2::splat(0.9)),
+///     )
+/// }
+/// # let _ = camera_following(Entity::PLACEHOLDER);
+/// ```
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Component, Debug, Clone, PartialEq)]
+pub struct HardLimit {
+    /// Width and height of the rectangle the point stays in.
+    pub size: Vec2,
+    /// How far inside the limit the camera starts to be carried, in the same unit (of the
+    /// view's width, for [`ZoneUnit::View`]).
+    pub slowing: f32,
+    /// What `size` and `slowing` are measured in.
+    pub unit: ZoneUnit,
+}
+
+impl HardLimit {
+    /// A limit `size` in fractions of the view, eased in over a tenth of the view.
+    #[must_use]
+    pub fn view(size: Vec2) -> Self {
+        Self {
+            size,
+            slowing: 0.1,
+            unit: ZoneUnit::View,
+        }
+    }
+
+    /// A limit `size` in world units, eased in over a tenth of its smaller side.
+    #[must_use]
+    pub fn world(size: Vec2) -> Self {
+        Self {
+            size,
+            slowing: 0.1 * size.min_element(),
+            unit: ZoneUnit::World,
+        }
+    }
+
+    /// The same limit, eased in over `slowing` (its unit); 0 clamps.
+    #[must_use]
+    pub fn with_slowing(mut self, slowing: f32) -> Self {
+        self.slowing = slowing;
+        self
+    }
+
+    /// The limit's half extents and its slowing band in world units, for a view of
+    /// `half_view` half extents. Negative or non-finite values count as 0.
+    #[must_use]
+    pub fn in_world(&self, half_view: Vec2) -> (Vec2, f32) {
+        let (half, slowing) = match self.unit {
+            ZoneUnit::View => (self.size * half_view, self.slowing * 2.0 * half_view.x),
+            ZoneUnit::World => (self.size * 0.5, self.slowing),
+        };
+        let half = if half.is_finite() {
+            half.max(Vec2::ZERO)
+        } else {
+            Vec2::ZERO
+        };
+        let slowing = if slowing.is_finite() {
+            slowing.max(0.0)
+        } else {
+            0.0
+        };
+        (half, slowing)
     }
 }
 
@@ -936,6 +1031,7 @@ pub(crate) struct RigTracking {
 #[derive(Reflect, Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(crate) struct ZoneContact {
     pub(crate) pushes_dead_zone: bool,
+    pub(crate) at_hard_limit: bool,
     pub(crate) at_confiner_edge: bool,
 }
 

@@ -26,7 +26,7 @@ pub use blend::{
 };
 pub use components::{
     CameraGoal, CameraRig, CameraTarget, CameraTargets, Confiner, ConfinerVolume, DeadZone,
-    GroupFraming, LookAhead, OrbitRig, RigHorizontal, RigHorizontalSpring, RigLookAhead,
+    GroupFraming, HardLimit, LookAhead, OrbitRig, RigHorizontal, RigHorizontalSpring, RigLookAhead,
     RigLookAheadSpring, RigMotion, RigOrbit, RigOrbitSpring, RigVertical, RigVerticalSpring,
     RigZoom, RigZoomSpring, ScreenPosition, ZoneSides, ZoneUnit,
 };
@@ -35,7 +35,10 @@ pub use components::{RigClearance, RigClearanceSpring};
 pub use framing::CameraFraming;
 #[cfg(feature = "camera_occlusion")]
 pub use occlusion::CameraOcclusion;
-pub use zones::{ConfinerEdgeLeft, ConfinerEdgeReached, DeadZoneEntered, DeadZoneExited};
+pub use zones::{
+    ConfinerEdgeLeft, ConfinerEdgeReached, DeadZoneEntered, DeadZoneExited, HardLimitLeft,
+    HardLimitReached,
+};
 
 use crate::property_plugin::SpringPropertyPlugin;
 use crate::spring::{
@@ -88,6 +91,7 @@ impl Plugin for SpringCameraPlugin {
         .register_type::<LookAhead>()
         .register_type::<DeadZone>()
         .register_type::<ZoneSides>()
+        .register_type::<HardLimit>()
         .register_type::<ScreenPosition>()
         .register_type::<Confiner>()
         .register_type::<ConfinerVolume>()

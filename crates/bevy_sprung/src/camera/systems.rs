@@ -8,8 +8,8 @@ use bevy::window::{PrimaryWindow, Window};
 
 use super::components::{
     CameraGoal, CameraRig, CameraTargets, Confiner, ConfinerVolume, DeadZone, GroupFraming,
-    LookAhead, OrbitRig, RigHorizontalSpring, RigLookAheadSpring, RigMotion, RigOrbitSpring,
-    RigTracking, RigVerticalSpring, RigZoomSpring, ScreenPosition, orbit_rotation,
+    HardLimit, LookAhead, OrbitRig, RigHorizontalSpring, RigLookAheadSpring, RigMotion,
+    RigOrbitSpring, RigTracking, RigVerticalSpring, RigZoomSpring, ScreenPosition, orbit_rotation,
 };
 use super::framing::CameraFraming;
 use super::view::{centre_range, ease_into, goal_range, view_area, viewport_size};
@@ -408,6 +408,8 @@ pub(super) struct RigPose {
 #[derive(QueryData)]
 pub(super) struct Posed {
     rig: &'static CameraRig,
+    goal: &'static CameraGoal,
+    limit: Option<&'static HardLimit>,
     confiner: Option<&'static Confiner>,
     volume: Option<&'static ConfinerVolume>,
     orbit: Option<&'static OrbitRig>,
@@ -421,6 +423,9 @@ impl PosedItem<'_, '_> {
         let distance = base_distance(self.rig, self.orbit, motion);
         let area = camera_view_area(&self.view, window, zoom, distance);
         let mut focus = motion.centre();
+        if let Some(limit) = self.limit {
+            focus = self.carried_by_goal(focus, limit, area.half_size());
+        }
         if let Some(confiner) = self.confiner {
             let range = centre_range(confiner.bounds, area);
             let slowing = confiner.slowing_distance;
@@ -459,6 +464,39 @@ impl PosedItem<'_, '_> {
 }
 
 impl PosedItem<'_, '_> {
+    /// `focus` carried along by the goal's point so that the point stays inside `limit`: the
+    /// point's offset from the view eased into the limit (the identity well inside it, a
+    /// slope falling smoothly to 0 at its edge), so the camera's velocity never jumps.
+    fn carried_by_goal(&self, focus: Vec3, limit: &HardLimit, half_view: Vec2) -> Vec3 {
+        let point = self.goal.point;
+        if !point.is_finite() {
+            return focus;
+        }
+        let (half, slowing) = limit.in_world(half_view);
+        let mut carried = focus;
+        for axis in 0..2 {
+            let offset = point[axis] - focus[axis];
+            carried[axis] = point[axis] - ease_into(offset, -half[axis], half[axis], slowing);
+        }
+        carried
+    }
+
+    /// Whether the goal's point is at the edge of the rig's [`HardLimit`] (the camera is
+    /// carried along by it): within [`EDGE_TOLERANCE`] of the view's size. `false` without a
+    /// limit.
+    pub(super) fn at_hard_limit(&self, motion: &RigMotion, window: Option<&Window>) -> bool {
+        let Some(limit) = self.limit else {
+            return false;
+        };
+        let distance = base_distance(self.rig, self.orbit, motion);
+        let area = camera_view_area(&self.view, window, motion.zoom(), distance);
+        let (half, _) = limit.in_world(area.half_size());
+        let focus = self.carried_by_goal(motion.centre(), limit, area.half_size());
+        let reach = (self.goal.point.truncate() - focus.truncate()).abs();
+        let tolerance = EDGE_TOLERANCE * area.size().max_element();
+        half != Vec2::ZERO && (half - reach).cmple(Vec2::splat(tolerance)).any()
+    }
+
     /// Whether the camera of a rig whose springs hold `motion` stands at its [`Confiner`]'s
     /// edge on some axis: its eased view within [`EDGE_TOLERANCE`] of the view's size from
     /// the bounds. `false` without a confiner.

@@ -1,5 +1,6 @@
-//! Zone events: a rig's framed point leaving or re-entering its [`DeadZone`], and its camera
-//! reaching or leaving its [`Confiner`](super::Confiner)'s edge.
+//! Zone events: a rig's framed point leaving or re-entering its [`DeadZone`], its target
+//! reaching or leaving its [`HardLimit`](super::HardLimit), and its camera reaching or leaving
+//! its [`Confiner`](super::Confiner)'s edge.
 
 use bevy::prelude::*;
 use bevy::window::{PrimaryWindow, Window};
@@ -39,6 +40,22 @@ pub struct DeadZoneEntered {
     pub entity: Entity,
 }
 
+/// Triggered on a rig's entity when its goal's point reaches its
+/// [`HardLimit`](super::HardLimit): the camera is carried along by the target.
+#[derive(EntityEvent, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct HardLimitReached {
+    /// The rig.
+    pub entity: Entity,
+}
+
+/// Triggered on a rig's entity when its goal's point is back inside its
+/// [`HardLimit`](super::HardLimit), off its edge.
+#[derive(EntityEvent, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct HardLimitLeft {
+    /// The rig.
+    pub entity: Entity,
+}
+
 /// Triggered on a rig's entity when its camera reaches its confiner's edge: the view stands on
 /// the bounds on some axis (within a ten-thousandth of the view's size), past the slowing band.
 #[derive(EntityEvent, Debug, Clone, Copy, PartialEq, Eq)]
@@ -74,6 +91,7 @@ pub(super) fn announce_zones(
     for (entity, framing, motion, mut tracking, has_zone, posed) in &mut rigs {
         let now = ZoneContact {
             pushes_dead_zone: has_zone && framing.pushes_dead_zone(),
+            at_hard_limit: posed.at_hard_limit(motion, window),
             at_confiner_edge: posed.at_confiner_edge(motion, window),
         };
         let Some(before) = tracking.contact.replace(now) else {
@@ -84,6 +102,13 @@ pub(super) fn announce_zones(
                 trigger_if_alive(&mut commands, DeadZoneExited { entity });
             } else {
                 trigger_if_alive(&mut commands, DeadZoneEntered { entity });
+            }
+        }
+        if now.at_hard_limit != before.at_hard_limit {
+            if now.at_hard_limit {
+                trigger_if_alive(&mut commands, HardLimitReached { entity });
+            } else {
+                trigger_if_alive(&mut commands, HardLimitLeft { entity });
             }
         }
         if now.at_confiner_edge != before.at_confiner_edge {
