@@ -420,8 +420,7 @@ impl PosedItem<'_, '_> {
     /// The pose of a rig whose springs hold `motion`.
     pub(super) fn pose(&self, motion: &RigMotion, window: Option<&Window>) -> RigPose {
         let zoom = motion.zoom();
-        let distance = base_distance(self.rig, self.orbit, motion);
-        let area = camera_view_area(&self.view, window, zoom, distance);
+        let area = self.view_area(motion, window);
         let mut focus = motion.centre();
         if let Some(limit) = self.limit {
             focus = self.carried_by_goal(focus, limit, area.half_size());
@@ -481,15 +480,19 @@ impl PosedItem<'_, '_> {
         carried
     }
 
+    /// The view a rig whose springs hold `motion` sees, around its focus, at its zoom.
+    pub(super) fn view_area(&self, motion: &RigMotion, window: Option<&Window>) -> Rect {
+        let distance = base_distance(self.rig, self.orbit, motion);
+        camera_view_area(&self.view, window, motion.zoom(), distance)
+    }
+
     /// Whether the goal's point is at the edge of the rig's [`HardLimit`] (the camera is
-    /// carried along by it): within [`EDGE_TOLERANCE`] of the view's size. `false` without a
-    /// limit.
-    pub(super) fn at_hard_limit(&self, motion: &RigMotion, window: Option<&Window>) -> bool {
+    /// carried along by it), for the rig's [`view_area`](Self::view_area) `area`: within
+    /// [`EDGE_TOLERANCE`] of the view's size. `false` without a limit.
+    pub(super) fn at_hard_limit(&self, motion: &RigMotion, area: Rect) -> bool {
         let Some(limit) = self.limit else {
             return false;
         };
-        let distance = base_distance(self.rig, self.orbit, motion);
-        let area = camera_view_area(&self.view, window, motion.zoom(), distance);
         let (half, _) = limit.in_world(area.half_size());
         let focus = self.carried_by_goal(motion.centre(), limit, area.half_size());
         let reach = (self.goal.point.truncate() - focus.truncate()).abs();
@@ -498,14 +501,13 @@ impl PosedItem<'_, '_> {
     }
 
     /// Whether the camera of a rig whose springs hold `motion` stands at its [`Confiner`]'s
-    /// edge on some axis: its eased view within [`EDGE_TOLERANCE`] of the view's size from
-    /// the bounds. `false` without a confiner.
-    pub(super) fn at_confiner_edge(&self, motion: &RigMotion, window: Option<&Window>) -> bool {
+    /// edge on some axis, for the rig's [`view_area`](Self::view_area) `area`: its eased view
+    /// within [`EDGE_TOLERANCE`] of the view's size from the bounds. `false` without a
+    /// confiner.
+    pub(super) fn at_confiner_edge(&self, motion: &RigMotion, area: Rect) -> bool {
         let Some(confiner) = self.confiner else {
             return false;
         };
-        let distance = base_distance(self.rig, self.orbit, motion);
-        let area = camera_view_area(&self.view, window, motion.zoom(), distance);
         let range = centre_range(confiner.bounds, area);
         let tolerance = EDGE_TOLERANCE * area.size().max_element();
         let centre = motion.centre();

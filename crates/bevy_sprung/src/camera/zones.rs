@@ -89,10 +89,11 @@ pub(super) fn announce_zones(
 ) {
     let window = window.single().ok();
     for (entity, framing, motion, mut tracking, has_zone, posed) in &mut rigs {
+        let area = posed.view_area(motion, window);
         let now = ZoneContact {
             pushes_dead_zone: has_zone && framing.pushes_dead_zone(),
-            at_hard_limit: posed.at_hard_limit(motion, window),
-            at_confiner_edge: posed.at_confiner_edge(motion, window),
+            at_hard_limit: posed.at_hard_limit(motion, area),
+            at_confiner_edge: posed.at_confiner_edge(motion, area),
         };
         let Some(before) = tracking.contact.replace(now) else {
             continue;
