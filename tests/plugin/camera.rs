@@ -19,20 +19,24 @@ use bevy_sprung::tracking::TargetWarped;
 
 use crate::harness::{app, primary_window, run_pattern};
 
-const RATES: [u32; 5] = [30, 60, 144, 240, 360];
+pub(crate) const RATES: [u32; 5] = [30, 60, 144, 240, 360];
 
 /// The confiner test's zoom changes: (second, zoom).
 const ZOOMS: [(u32, f32); 3] = [(2, 1.8), (3, 0.6), (4, 1.0)];
 
 #[derive(Component)]
-struct Player;
+pub(crate) struct Player;
 
 /// How the player moves: its position at time `t`.
 #[derive(Resource, Clone, Copy)]
-struct Path(fn(f32) -> Vec3);
+pub(crate) struct Path(pub(crate) fn(f32) -> Vec3);
 
 /// Gameplay: the player is put on its path, in `Update`.
-fn move_player(time: Res<Time>, path: Res<Path>, mut players: Query<&mut Transform, With<Player>>) {
+pub(crate) fn move_player(
+    time: Res<Time>,
+    path: Res<Path>,
+    mut players: Query<&mut Transform, With<Player>>,
+) {
     for mut transform in &mut players {
         transform.translation = (path.0)(time.elapsed_secs());
     }
@@ -40,7 +44,11 @@ fn move_player(time: Res<Time>, path: Res<Path>, mut players: Query<&mut Transfo
 
 /// An app at `fps` with a primary window of `width × height` logical pixels and a player on
 /// `path`.
-fn camera_app(fps: u32, (width, height): (u32, u32), path: fn(f32) -> Vec3) -> (App, Entity) {
+pub(crate) fn camera_app(
+    fps: u32,
+    (width, height): (u32, u32),
+    path: fn(f32) -> Vec3,
+) -> (App, Entity) {
     let mut app = app(fps);
     app.insert_resource(Path(path))
         .add_systems(Update, move_player);
@@ -61,7 +69,7 @@ fn camera_2d(rig: CameraRig) -> impl Bundle {
     )
 }
 
-fn translation(app: &App, entity: Entity) -> Vec3 {
+pub(crate) fn translation(app: &App, entity: Entity) -> Vec3 {
     app.world().get::<Transform>(entity).unwrap().translation
 }
 
@@ -124,7 +132,7 @@ fn a_target_moving_inside_the_dead_zone_never_writes_the_camera() {
 }
 
 /// Frame-time patterns (seconds), cycled: steady at each rate, alternating, bursty, irregular.
-fn patterns() -> Vec<Vec<f64>> {
+pub(crate) fn patterns() -> Vec<Vec<f64>> {
     let mut patterns: Vec<Vec<f64>> = RATES
         .iter()
         .map(|&fps| vec![1.0 / f64::from(fps)])

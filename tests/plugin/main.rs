@@ -32,6 +32,7 @@ mod layout;
 mod motion;
 mod presence;
 mod properties;
+mod rail;
 mod scheduling;
 mod serde;
 mod sleeping;

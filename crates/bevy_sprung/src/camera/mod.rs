@@ -12,6 +12,7 @@ mod components;
 mod framing;
 #[cfg(feature = "camera_occlusion")]
 mod occlusion;
+mod rail;
 mod systems;
 mod view;
 mod zones;
@@ -35,6 +36,10 @@ pub use components::{RigClearance, RigClearanceSpring};
 pub use framing::CameraFraming;
 #[cfg(feature = "camera_occlusion")]
 pub use occlusion::CameraOcclusion;
+#[cfg(feature = "debug")]
+pub(crate) use rail::RailState;
+pub use rail::{CameraRail, RailAim, RailFollow, RailMotion, RigRail, RigRailSpring};
+pub use systems::CameraRigSystems;
 pub use zones::{
     ConfinerEdgeLeft, ConfinerEdgeReached, DeadZoneEntered, DeadZoneExited, HardLimitLeft,
     HardLimitReached,
@@ -45,24 +50,6 @@ use crate::spring::{
     PropertySpring, PropertySystems, SpringPhase, SpringSystems, add_property_systems,
     add_systems_on_first_use, spring_schedule, warn_lacking,
 };
-
-/// The stages of a rig's frame in [`SpringUpdate`](crate::spring::SpringUpdate), in this
-/// order. Put a system of your own that computes or changes a [`CameraGoal`] in
-/// [`Goal`](Self::Goal).
-#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum CameraRigSystems {
-    /// [`CameraTargets`] set the goal.
-    Targets,
-    /// Your systems change the goal (or set it, for a rig without targets).
-    Goal,
-    /// The goal's velocity is taken, and the look-ahead, zoom and orbit springs retargeted
-    /// (they step next).
-    Track,
-    /// The dead zone, screen position and confiner shape the centre the camera springs to.
-    Frame,
-    /// The camera's `Transform` and projection are written from the springs.
-    Compose,
-}
 
 /// [`CameraRig`] and its parts (part of [`SpringPlugins`](crate::SpringPlugins) with feature
 /// `camera`). The rig's systems join the spring schedule with the first rig: goals and the
@@ -81,6 +68,8 @@ impl Plugin for SpringCameraPlugin {
         // The clearance steps before the camera is placed, from the last frame's pull.
         #[cfg(feature = "camera_occlusion")]
         app.add_plugins(occlusion::SpringCameraOcclusionPlugin);
+        // The place along a rail steps before the camera is put on it.
+        app.add_plugins(rail::SpringCameraRailPlugin);
         app.add_plugins((
             SpringPropertyPlugin::<RigHorizontal>::default(),
             SpringPropertyPlugin::<RigVertical>::default(),

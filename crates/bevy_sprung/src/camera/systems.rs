@@ -18,6 +18,24 @@ use crate::follow::{FixedSamples, TargetMotion, fixed_sample};
 use crate::spring::SpringTargetMut;
 use crate::tracking::{TargetWarped, WorldPositions, take_warp};
 
+/// The stages of a rig's frame in [`SpringUpdate`](crate::spring::SpringUpdate), in this
+/// order. Put a system of your own that computes or changes a [`CameraGoal`] in
+/// [`Goal`](Self::Goal).
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CameraRigSystems {
+    /// [`CameraTargets`] set the goal.
+    Targets,
+    /// Your systems change the goal (or set it, for a rig without targets).
+    Goal,
+    /// The goal's velocity is taken, and the look-ahead, zoom and orbit springs retargeted
+    /// (they step next).
+    Track,
+    /// The dead zone, screen position and confiner shape the centre the camera springs to.
+    Frame,
+    /// The camera's `Transform` and projection are written from the springs.
+    Compose,
+}
+
 /// After each fixed step: where the targets of rigs whose targets move in `FixedUpdate` are.
 pub(super) fn sample_fixed_targets(mut rigs: Query<&mut CameraTargets>, positions: WorldPositions) {
     for mut targets in &mut rigs {

@@ -5,8 +5,8 @@ use bevy::gizmos::config::GizmoConfigGroup;
 use bevy::prelude::*;
 
 use crate::camera::{
-    CameraFraming, CameraGoal, CameraTargets, Confiner, ConfinerVolume, GroupFraming, OrbitRig,
-    RigMotion,
+    CameraFraming, CameraGoal, CameraTargets, Confiner, ConfinerVolume, GroupFraming, HardLimit,
+    OrbitRig, RailMotion, RailState, RigMotion,
 };
 
 /// The camera group of the [debug overlay](super): for each
@@ -16,7 +16,10 @@ use crate::camera::{
 ///   orange while it pushes an edge and the camera follows);
 /// - the framed point (a ring), the goal (a cross) and the look-ahead between them;
 /// - the view the camera is heading for (its centre and extent at the framed point);
+/// - the hard limit around the point the camera looks at, and within it the band where the
+///   target starts to carry the camera;
 /// - the confiner's bounds, and within them the band where the camera slows;
+/// - a camera's rail, with a ring where the camera is on it and a cross where it is going;
 /// - each target with its radius and, with group framing, the extent the zoom fits;
 /// - the orbit sphere, and the ray an occluder is looked for on (red while one pulls
 ///   the camera in);
@@ -61,6 +64,8 @@ type Rig = (
     Option<&'static CameraTargets>,
     Option<&'static GroupFraming>,
     Has<OrbitRig>,
+    Option<&'static HardLimit>,
+    Option<(&'static RailState, &'static RailMotion)>,
 );
 
 /// Draws every rig's guides.
@@ -70,7 +75,9 @@ pub(super) fn draw_rigs(
     globals: Query<&GlobalTransform>,
 ) {
     let options = *gizmos.config_ext;
-    for (framing, goal, camera, motion, confiner, volume, targets, group, orbit) in &rigs {
+    for (framing, goal, camera, motion, confiner, volume, targets, group, orbit, limit, rail) in
+        &rigs
+    {
         let facing = camera.rotation();
         let plane = |centre: Vec3| Isometry3d::new(centre, facing);
         draw_dead_zone(&mut gizmos, framing);
@@ -86,6 +93,17 @@ pub(super) fn draw_rigs(
                 2.0 * framing.half_view(),
                 css::SLATE_GRAY,
             );
+        }
+        if let Some(limit) = limit {
+            let (half, slowing) = limit.in_world(framing.half_view());
+            // Where the camera looks, at the framed point's depth.
+            let forward = camera.forward();
+            let looked_at =
+                camera.translation() + forward * (point - camera.translation()).dot(*forward);
+            draw_limit(&mut gizmos, plane(looked_at), half, slowing);
+        }
+        if let Some((state, rail_motion)) = rail {
+            draw_rail(&mut gizmos, state, rail_motion.distance(), options.size);
         }
         if let Some(confiner) = confiner {
             draw_bounds(
@@ -148,6 +166,31 @@ fn draw_dead_zone(gizmos: &mut Gizmos<CameraRigGizmos>, framing: &CameraFraming)
         half.min_element().max(1e-3) * 0.25,
         color,
     );
+}
+
+/// A hard limit of half extents `half` placed at `at`, and the band `slowing` wide inside it.
+fn draw_limit(gizmos: &mut Gizmos<CameraRigGizmos>, at: Isometry3d, half: Vec2, slowing: f32) {
+    if half == Vec2::ZERO {
+        return;
+    }
+    gizmos.rect(at, 2.0 * half, css::TOMATO);
+    let inner = half - Vec2::splat(slowing);
+    if slowing > 0.0 && inner.cmpgt(Vec2::ZERO).all() {
+        gizmos.rect(at, 2.0 * inner, css::DARK_SALMON);
+    }
+}
+
+/// A camera's rail, a ring where the camera is on it and a cross where it springs to.
+fn draw_rail(gizmos: &mut Gizmos<CameraRigGizmos>, state: &RailState, distance: f32, size: f32) {
+    let Some(track) = state.track() else {
+        return;
+    };
+    gizmos.linestrip(track.points().iter().copied(), css::TEAL);
+    let at = |distance: f32| Isometry3d::from_translation(track.position_at(distance));
+    gizmos.sphere(at(distance), size, css::AQUAMARINE);
+    if let Some(goal) = state.goal() {
+        gizmos.cross(at(goal), size * 0.75, css::AQUAMARINE);
+    }
 }
 
 /// A confiner's bounds in the plane `z`, and the band `slowing` wide inside them.
