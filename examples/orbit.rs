@@ -1,17 +1,19 @@
 //! A third-person orbit camera: a [`CameraRig`] with an [`OrbitRig`] around a player walking
 //! among pillars. Yaw, pitch and distance spring in polar coordinates (orbiting never changes
 //! the distance); [`CameraOcclusion`] pulls the camera in front of a pillar that comes between
-//! it and the player, and lets it spring back out once the way is clear. Tab switches to an
-//! overview shot: the two rigs are [`VirtualCamera`]s and the rendering camera's
-//! [`CameraBlend`] springs from one to the other with its velocity kept.
+//! it and the player, and lets it spring back out once the way is clear. Tab switches to a
+//! dolly shot: a camera on a curved rail along the front of the arena ([`CameraRail`]), which
+//! slides along it to the place nearest the player and turns to watch them. The two rigs are
+//! [`VirtualCamera`]s and the rendering camera's [`CameraBlend`] springs from one to the other
+//! with its velocity kept.
 //!
 //! D shows the rigs' guides (the debug overlay, [`SpringDebugPlugin`]): the point each shot
-//! frames, the orbit sphere, and the ray occlusion is looked for on (red while a pillar pulls
-//! the camera in).
+//! frames, the orbit sphere, the ray occlusion is looked for on (red while a pillar pulls the
+//! camera in), and the dolly's rail with the place its camera is at.
 //!
-//! Drag with the left mouse button to orbit, scroll to zoom, Tab for the overview. Without
-//! input the camera turns slowly round the player on its own, the overview comes and goes, and
-//! the guides are shown for the last part.
+//! Drag with the left mouse button to orbit, scroll to zoom, Tab for the dolly. Without input
+//! the camera turns slowly round the player on its own, the dolly shot comes and goes, and the
+//! guides are shown for the last part.
 //!
 //! ```text
 //! cargo run --example orbit
@@ -20,9 +22,12 @@
 use bevy::core_pipeline::tonemapping::Tonemapping;
 use bevy::gizmos::config::GizmoConfigStore;
 use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll};
+use bevy::math::cubic_splines::{CubicCardinalSpline, CubicGenerator};
 use bevy::prelude::*;
 use bevy_sprung::camera::{BlendTrack, RigMotion};
-use bevy_sprung::camera::{CameraBlend, CameraOcclusion, CameraTargets, OrbitRig, VirtualCamera};
+use bevy_sprung::camera::{
+    CameraBlend, CameraOcclusion, CameraRail, CameraTargets, OrbitRig, VirtualCamera,
+};
 use bevy_sprung::debug::{CameraRigGizmos, SpringDebugPlugin};
 use bevy_sprung::prelude::*;
 
@@ -38,7 +43,7 @@ struct Player;
 #[derive(Component)]
 struct OrbitShot;
 #[derive(Component)]
-struct Overview;
+struct Dolly;
 
 #[derive(Component)]
 struct Hud;
@@ -104,7 +109,7 @@ fn setup(
         },
         Transform::from_xyz(4.0, 10.0, 6.0).looking_at(Vec3::ZERO, Vec3::Y),
     ));
-    // The shots: an orbit behind the player, pulled in by pillars, and a high overview.
+    // The shots: an orbit behind the player, pulled in by pillars, and a dolly on a rail.
     commands.spawn((
         OrbitShot,
         VirtualCamera::new(1),
@@ -116,14 +121,23 @@ fn setup(
             .with_limits(Vec2::new(-0.2, 1.3), Vec2::new(4.0, 20.0)),
         CameraOcclusion::new(0.4),
     ));
+    // The rail: a curve along the front of the arena, rising at the middle.
+    let rail = CubicCardinalSpline::new_catmull_rom([
+        Vec3::new(-16.0, 3.0, 11.0),
+        Vec3::new(-8.0, 6.0, 15.0),
+        Vec3::new(0.0, 7.0, 16.0),
+        Vec3::new(8.0, 6.0, 15.0),
+        Vec3::new(16.0, 3.0, 11.0),
+    ])
+    .to_curve()
+    .expect("five points make a curve");
     commands.spawn((
-        Overview,
+        Dolly,
         VirtualCamera::new(0),
         Projection::Perspective(default()),
-        CameraRig::new(Spring::gentle())
-            .with_offset(Vec3::new(0.0, 26.0, 12.0))
-            .looking_at_goal(),
+        CameraRig::new(Spring::smooth()),
         CameraTargets::single(player),
+        CameraRail::new(rail).with_spring(Spring::gentle()),
     ));
     commands.spawn((
         Camera3d::default(),
@@ -174,20 +188,20 @@ fn orbit_input(
     }
 }
 
-/// Tab (or the tour: from 3.5 s to 5.5 s) raises the overview above the orbit.
+/// Tab (or the tour: from 3.5 s to 5.5 s) raises the dolly above the orbit.
 fn switch_shot(
     tour: Res<Tour>,
     keys: Res<ButtonInput<KeyCode>>,
-    mut overview: Single<&mut VirtualCamera, With<Overview>>,
+    mut dolly: Single<&mut VirtualCamera, With<Dolly>>,
 ) {
     let wanted = match tour.time() {
         Some(t) if (3.5..5.5).contains(&t) => 2,
         Some(_) => 0,
-        None if keys.just_pressed(KeyCode::Tab) => 2 - overview.priority,
-        None => overview.priority,
+        None if keys.just_pressed(KeyCode::Tab) => 2 - dolly.priority,
+        None => dolly.priority,
     };
-    if overview.priority != wanted {
-        overview.priority = wanted;
+    if dolly.priority != wanted {
+        dolly.priority = wanted;
     }
 }
 
@@ -213,7 +227,7 @@ fn hud(
     let shot = if blend.shot() == Some(orbit_shot) {
         "orbit"
     } else {
-        "overview"
+        "dolly"
     };
     let clearance = motion.clearance();
     text.0 = format!(

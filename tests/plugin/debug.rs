@@ -12,7 +12,9 @@ use bevy::input::InputPlugin;
 use bevy::input::keyboard::{Key, KeyboardInput};
 use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
-use bevy_sprung::camera::{CameraFraming, CameraTargets, Confiner, DeadZone};
+use bevy_sprung::camera::{
+    CameraFraming, CameraRail, CameraTargets, Confiner, DeadZone, HardLimit, RailAim,
+};
 use bevy_sprung::chain::SpringChain;
 use bevy_sprung::debug::{
     CameraRigGizmos, ChainGizmos, SpringDebugPlugin, SpringGizmos, ThrowGizmos, UiSpringGizmos,
@@ -328,6 +330,93 @@ fn circle_of(strip: &[Vec3]) -> (Vec3, f32) {
     let ring = &strip[..strip.len() - 1];
     let centre = ring.iter().copied().sum::<Vec3>() / ring.len() as f32;
     (centre, strip[0].distance(centre))
+}
+
+/// A rail is drawn along its curve with a ring where the camera is on it, and a hard limit
+/// as its rectangle and slowing band around where the camera looks, frame by frame.
+#[test]
+fn a_rail_and_a_hard_limit_are_drawn_where_they_act() {
+    use bevy::math::cubic_splines::{CubicCardinalSpline, CubicGenerator};
+
+    let mut app = overlay_app(60, SpringDebugPlugin::default());
+    primary_window(app.world_mut(), 1280, 720);
+    let player = app
+        .world_mut()
+        .spawn(Transform::from_xyz(-800.0, 0.0, 0.0))
+        .id();
+    // A rail across the level with a rise in the middle, in the camera's plane.
+    let rail = CubicCardinalSpline::new_catmull_rom([
+        Vec3::new(-3000.0, 0.0, 500.0),
+        Vec3::new(0.0, 400.0, 500.0),
+        Vec3::new(3000.0, 0.0, 500.0),
+    ])
+    .to_curve()
+    .unwrap();
+    let camera = app
+        .world_mut()
+        .spawn((
+            Camera2d,
+            Projection::Orthographic(OrthographicProjection::default_2d()),
+            CameraRig::new(Spring::smooth()),
+            CameraTargets::single(player),
+            CameraRail::new(rail).aiming(RailAim::Unchanged),
+        ))
+        .id();
+    // A second camera, not on a rail, keeps the player inside its hard limit.
+    let limited = app
+        .world_mut()
+        .spawn((
+            Camera2d,
+            Projection::Orthographic(OrthographicProjection::default_2d()),
+            CameraRig::new(Spring::smooth()),
+            CameraTargets::single(player),
+            HardLimit::view(Vec2::new(0.8, 0.6)),
+        ))
+        .id();
+    // Fast enough to reach the limit.
+    for frame in 0..60 {
+        app.world_mut()
+            .get_mut::<Transform>(player)
+            .unwrap()
+            .translation
+            .x += 40.0;
+        app.update();
+        let eye = world_position(&app, camera);
+        // The rail from end to end, every point on the curve's plane.
+        let rails = strips_in::<CameraRigGizmos>(&app, css::TEAL);
+        assert_eq!(rails.len(), 1, "frame {frame}");
+        let rail = &rails[0];
+        assert!(rail[0].distance(Vec3::new(-3000.0, 0.0, 500.0)) < 1e-2);
+        assert!(rail[rail.len() - 1].distance(Vec3::new(3000.0, 0.0, 500.0)) < 1e-2);
+        assert!(rail.iter().all(|point| point.z == 500.0));
+        // A ring round the camera's place on it.
+        let rings = strips_in::<CameraRigGizmos>(&app, css::AQUAMARINE);
+        assert!(
+            rings
+                .iter()
+                .any(|ring| circle_of(ring).0.distance(eye) < 1e-2),
+            "frame {frame}: no ring at {eye}"
+        );
+        // The limit: 0.8 × 0.6 of the view round where the camera looks, and inside it the
+        // band a tenth of the view wide.
+        for (color, size) in [
+            (css::TOMATO, Vec2::new(1024.0, 432.0)),
+            (css::DARK_SALMON, Vec2::new(768.0, 176.0)),
+        ] {
+            let drawn = strips_in::<CameraRigGizmos>(&app, color);
+            assert_eq!(drawn.len(), 1, "frame {frame}");
+            assert!((extent(&drawn[0]) - size).length() < 1e-2, "frame {frame}");
+            let (low, high) = drawn[0]
+                .iter()
+                .fold((Vec3::MAX, Vec3::MIN), |(l, h), p| (l.min(*p), h.max(*p)));
+            let centre = (low + high).truncate() * 0.5;
+            let looking = world_position(&app, limited).truncate();
+            assert!(
+                centre.distance(looking) < 1e-2,
+                "frame {frame}: {centre} {looking}"
+            );
+        }
+    }
 }
 
 /// A rotation spring's pointer: the path drawn for its tip is where the tip then is, frame by

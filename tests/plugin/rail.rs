@@ -133,6 +133,7 @@ fn a_looped_rail_wraps_without_a_jump_the_same_at_every_frame_rate() {
             if let Some(last) = last {
                 // Never faster than the target goes round (a critically damped camera does not
                 // overshoot its speed): a wrap would jump a whole lap.
+                #[expect(clippy::cast_possible_truncation, reason = "a frame's time")]
                 let dt = (elapsed - last_time) as f32;
                 let step = wrapped(angle - last).abs();
                 worst_step = worst_step.max(step / (RATE * dt));
@@ -320,13 +321,13 @@ fn a_blend_to_a_rail_shot_ends_on_the_rail() {
                 app.world_mut()
                     .get_mut::<VirtualCamera>(wide)
                     .unwrap()
-                    .priority = 2
+                    .priority = 2;
             }
             230 => {
                 app.world_mut()
                     .get_mut::<VirtualCamera>(wide)
                     .unwrap()
-                    .priority = 0
+                    .priority = 0;
             }
             _ => {}
         }
@@ -388,7 +389,7 @@ fn the_world_changing_under_a_rail_never_panics_nor_writes_nan() {
         [camera, stuck, gapped]
             .iter()
             .filter_map(|&entity| app.world().get::<Transform>(entity))
-            .all(|transform| transform.is_finite())
+            .all(Transform::is_finite)
     };
     for frame in 0..900 {
         match frame {

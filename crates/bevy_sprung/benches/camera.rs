@@ -11,7 +11,10 @@
 //! - `rig_2d`: an orthographic `CameraRig` with two targets (the player and its neighbour),
 //!   look-ahead, dead zone, screen position, confiner and group framing;
 //! - `rig_orbit`: a perspective `CameraRig` with an `OrbitRig` turned every frame, look-ahead
-//!   and group framing.
+//!   and group framing;
+//! - `rig_rail`: a perspective `CameraRig` on a looped `CameraRail` round the player's circle
+//!   (twelve Catmull-Rom segments), springing to the place nearest the player and looking at
+//!   it.
 //!
 //! A counting allocator reports the allocations per frame of each scene beyond the baseline's
 //! (the rig must make none).
@@ -21,11 +24,13 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::time::{Duration, Instant};
 
 use bevy::camera::{OrthographicProjection, Projection};
+use bevy::math::cubic_splines::{CubicCardinalSpline, CyclicCubicGenerator};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy::window::{PrimaryWindow, WindowResolution};
 use bevy_sprung::camera::{
-    CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig, ScreenPosition,
+    CameraRail, CameraTargets, Confiner, DeadZone, GroupFraming, LookAhead, OrbitRig,
+    ScreenPosition,
 };
 use bevy_sprung::prelude::*;
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -91,10 +96,17 @@ enum Scene {
     Follow,
     Rig2d,
     RigOrbit,
+    RigRail,
 }
 
 impl Scene {
-    const ALL: [Self; 4] = [Self::None, Self::Follow, Self::Rig2d, Self::RigOrbit];
+    const ALL: [Self; 5] = [
+        Self::None,
+        Self::Follow,
+        Self::Rig2d,
+        Self::RigOrbit,
+        Self::RigRail,
+    ];
 
     fn name(self) -> &'static str {
         match self {
@@ -102,6 +114,7 @@ impl Scene {
             Self::Follow => "follow",
             Self::Rig2d => "rig_2d",
             Self::RigOrbit => "rig_orbit",
+            Self::RigRail => "rig_rail",
         }
     }
 }
@@ -167,6 +180,25 @@ fn app(scene: Scene) -> App {
                     OrbitRig::new(600.0),
                     LookAhead::new(0.3),
                     GroupFraming::new(0.1),
+                ));
+            }
+            Scene::RigRail => {
+                // A ring round the player's circle, 300 up.
+                #[expect(clippy::cast_precision_loss, reason = "a few players")]
+                let centre = Vec3::X * (i as f32 * 0.01) * 500.0;
+                let ring = (0..12).map(|k| {
+                    #[expect(clippy::cast_precision_loss, reason = "twelve points")]
+                    let angle = k as f32 * core::f32::consts::TAU / 12.0;
+                    centre + Vec3::new(600.0 * angle.cos(), 450.0 * angle.sin(), 300.0)
+                });
+                let rail = CubicCardinalSpline::new_catmull_rom(ring)
+                    .to_curve_cyclic()
+                    .expect("twelve points make a loop");
+                app.world_mut().spawn((
+                    Projection::Perspective(default()),
+                    CameraRig::new(Spring::smooth()),
+                    CameraTargets::single(player),
+                    CameraRail::new(rail).looped(),
                 ));
             }
         }

@@ -124,7 +124,9 @@ pub enum RailAim {
     AtFocus,
     /// Along the rail, the way it runs (a ride).
     Along,
-    /// The camera's rotation is left as it is (a 2D camera on a rail in its plane).
+    /// The camera's rotation is left as it is (a 2D camera on a rail in its plane). Nothing
+    /// turns to the point the rig frames, so the rig's dead zone, screen position and hard
+    /// limit shape nothing the camera shows.
     Unchanged,
 }
 
@@ -213,12 +215,14 @@ pub type RigRailSpring = PropertySpring<RigRail>;
 #[derive(Component, Debug, Clone, Default)]
 pub(crate) struct RailState {
     track: Option<RailTrack>,
-    /// The place nearest the goal last frame: the nearest-point search starts there.
+    /// The curve's parameter at the place nearest the goal last frame: the nearest-point
+    /// search starts there.
     nearest: Option<f32>,
     /// The place the camera sprang to last frame, for its velocity.
     last_goal: Option<f32>,
 }
 
+#[cfg(feature = "debug")]
 impl RailState {
     /// The rail's distance table, once the camera has followed it.
     pub(crate) fn track(&self) -> Option<&RailTrack> {
@@ -231,8 +235,8 @@ impl RailState {
     }
 }
 
-/// The place on `track` that `rail` follows for `goal`, searched for from `nearest` (last
-/// frame's nearest place, updated), or along the whole rail when `fresh` (the target was
+/// The place on `track` that `rail` follows for `goal`, searched for from `nearest` (the
+/// curve's parameter at last frame's nearest place, updated), or along the whole rail when `fresh` (the target was
 /// warped or the rail replaced).
 fn goal_on(
     track: &RailTrack,
@@ -243,8 +247,8 @@ fn goal_on(
 ) -> Option<f32> {
     let mut find_nearest = || {
         let found = track.nearest(goal, if fresh { None } else { *nearest });
-        *nearest = Some(found);
-        found
+        *nearest = Some(found.parameter);
+        found.distance
     };
     let place = match rail.follow {
         RailFollow::Nearest if goal.is_finite() => find_nearest(),
@@ -257,7 +261,7 @@ fn goal_on(
 
 /// What a rail camera is read and written through while it follows.
 type Railed<'a> = (
-    &'a CameraRail,
+    Ref<'a, CameraRail>,
     &'a CameraGoal,
     &'a RigTracking,
     &'a Transform,
@@ -271,10 +275,11 @@ type Railed<'a> = (
 pub(super) fn follow_rails(time: SpringTime, mut rails: Query<Railed>) {
     let steps = time.steps();
     for (rail, goal, tracking, camera, mut state, mut motion, mut spring) in &mut rails {
-        let replaced = !state
-            .track
-            .as_ref()
-            .is_some_and(|track| track.is_of(&rail.curve, rail.looped));
+        // Compared only when the rail was changed (its place followed, perhaps, not its curve).
+        let replaced = match state.track.as_ref() {
+            Some(track) => rail.is_changed() && !track.is_of(&rail.curve, rail.looped),
+            None => true,
+        };
         let first_frame = state.track.is_none();
         if replaced {
             let track = RailTrack::new(&rail.curve, rail.looped);
@@ -286,7 +291,7 @@ pub(super) fn follow_rails(time: SpringTime, mut rails: Query<Railed>) {
             }
             if !first_frame {
                 // On the new rail where it stood, going on at its speed along the rail.
-                motion.distance = track.nearest(camera.translation, None);
+                motion.distance = track.nearest(camera.translation, None).distance;
             }
             state.track = Some(track);
             state.nearest = None;
@@ -304,7 +309,7 @@ pub(super) fn follow_rails(time: SpringTime, mut rails: Query<Railed>) {
         else {
             continue;
         };
-        let Some(place) = goal_on(track, rail, goal.point, nearest, replaced || warped) else {
+        let Some(place) = goal_on(track, &rail, goal.point, nearest, replaced || warped) else {
             // Nowhere to go: the camera comes to rest where it aims.
             spring.set_target_velocity_if_neq(0.0);
             continue;

@@ -2,7 +2,7 @@
 
 use alloc::vec::Vec;
 
-use bevy::math::cubic_splines::CubicCurve;
+use bevy::math::cubic_splines::{CubicCurve, CubicSegment};
 use bevy::prelude::*;
 
 /// Samples per curve segment in the distance table. The chords between them are shorter than
@@ -13,6 +13,14 @@ const SAMPLES_PER_SEGMENT: usize = 32;
 /// Newton steps refining the nearest point from the nearest chord: each one squares the error,
 /// and the chord's point is already within a fraction of a sample of it.
 const NEWTON_STEPS: usize = 3;
+
+/// How many chords either side of a constant speed's guess are looked at before searching the
+/// whole table.
+const LOCAL_SEARCH: usize = 3;
+
+/// A Newton step this small (of a segment's parameter) has converged: the next would move the
+/// point by less than `f32` resolves on a segment a few thousand units long.
+const CONVERGED: f32 = 1e-6;
 
 /// A rail's curve with its distance table: the curve sampled evenly in its parameter, and the
 /// distance along the chords to each sample. Distance and parameter map to each other linearly
@@ -82,6 +90,7 @@ impl RailTrack {
     }
 
     /// The samples of the curve, for drawing it.
+    #[cfg(any(feature = "debug", test))]
     pub(crate) fn points(&self) -> &[Vec3] {
         &self.points
     }
@@ -120,15 +129,11 @@ impl RailTrack {
     pub(crate) fn parameter_at(&self, distance: f32) -> f32 {
         let distance = self.on_rail(distance);
         let chords = self.distances.len().saturating_sub(1);
-        if chords == 0 {
+        let length = self.length();
+        if chords == 0 || length <= 0.0 {
             return 0.0;
         }
-        // The last sample not past `distance`.
-        let index = self
-            .distances
-            .partition_point(|&sample| sample <= distance)
-            .clamp(1, chords)
-            - 1;
+        let index = self.chord_containing(distance, chords, length);
         let (start, end) = (self.distances[index], self.distances[index + 1]);
         let fraction = if end > start {
             ((distance - start) / (end - start)).clamp(0.0, 1.0)
@@ -136,6 +141,32 @@ impl RailTrack {
             0.0
         };
         (index as f32 + fraction) / SAMPLES_PER_SEGMENT as f32
+    }
+
+    /// The chord (of `chords`, along a rail `length` long) whose samples bracket `distance`,
+    /// in `[0, length]`. The chord a constant speed would put it on is tried first, with a
+    /// few neighbours: a table as long as a rail's reads a cache line or two instead of a
+    /// binary search's dozen.
+    fn chord_containing(&self, distance: f32, chords: usize, length: f32) -> usize {
+        let contains = |chord: usize| {
+            self.distances[chord] <= distance
+                && (distance < self.distances[chord + 1] || chord + 1 == chords)
+        };
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a fraction of the chords: in 0..=chords"
+        )]
+        let guess = ((distance / length * chords as f32) as usize).min(chords - 1);
+        let nearby = (guess.saturating_sub(LOCAL_SEARCH)..=(guess + LOCAL_SEARCH).min(chords - 1))
+            .find(|&chord| contains(chord));
+        nearby.unwrap_or_else(|| {
+            // The last sample not past `distance`.
+            self.distances
+                .partition_point(|&sample| sample <= distance)
+                .clamp(1, chords)
+                - 1
+        })
     }
 
     /// The distance along the rail at the curve's parameter `parameter`.
@@ -170,43 +201,42 @@ impl RailTrack {
         self.curve.velocity(self.parameter_at(distance))
     }
 
-    /// The distance along the rail of the point nearest `target`. From `near` (last frame's
-    /// answer), the search walks the chords downhill to the nearest one close by, so that a
-    /// rail passing near itself keeps the branch it was on; without it, every chord is
-    /// looked at. Newton's method then finds the point on the curve itself.
+    /// The place on the rail nearest `target`: its distance along the rail and the curve's
+    /// parameter there. From `near` (last frame's parameter), the search walks the chords
+    /// downhill to the nearest one close by, so that a rail passing near itself keeps the
+    /// branch it was on; without it, every chord is looked at. Newton's method then finds the
+    /// point on the curve itself.
     #[must_use]
-    pub(crate) fn nearest(&self, target: Vec3, near: Option<f32>) -> f32 {
+    pub(crate) fn nearest(&self, target: Vec3, near: Option<f32>) -> RailPlace {
         let chords = self.points.len().saturating_sub(1);
         if chords == 0 || !target.is_finite() {
-            return 0.0;
+            return RailPlace::default();
         }
+        let per = SAMPLES_PER_SEGMENT as f32;
         let chord = match near.filter(|near| near.is_finite()) {
-            Some(near) => self.walk_downhill(target, self.chord_at(near)),
+            Some(near) => {
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    reason = "clamped to the chords"
+                )]
+                let chord = (near * per).clamp(0.0, (chords - 1) as f32) as usize;
+                self.walk_downhill(target, chord)
+            }
             None => (0..chords)
                 .map(|chord| (chord, self.chord_distance(target, chord).0))
                 .min_by(|a, b| a.1.total_cmp(&b.1))
                 .map_or(0, |(chord, _)| chord),
         };
         let (_, along) = self.chord_distance(target, chord);
-        let per = SAMPLES_PER_SEGMENT as f32;
         let low = chord.saturating_sub(1) as f32 / per;
         let high = (chord + 2).min(chords) as f32 / per;
         let start = (chord as f32 + along) / per;
         let parameter = self.refine(target, start, (low, high));
-        self.distance_at(parameter)
-    }
-
-    /// The chord `distance` along the rail lies on.
-    fn chord_at(&self, distance: f32) -> usize {
-        let chords = self.distances.len().saturating_sub(1);
-        let scaled = self.parameter_at(distance) * SAMPLES_PER_SEGMENT as f32;
-        #[expect(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "a parameter on the curve: in 0..=chords"
-        )]
-        let chord = scaled as usize;
-        chord.min(chords.saturating_sub(1))
+        RailPlace {
+            distance: self.distance_at(parameter),
+            parameter,
+        }
     }
 
     /// The squared distance from `target` to chord `chord`, and how far along the chord (0 to
@@ -259,10 +289,11 @@ impl RailTrack {
         let mut parameter = start;
         let mut best = self.curve.position(parameter).distance_squared(target);
         for _ in 0..NEWTON_STEPS {
-            let offset = self.curve.position(parameter) - target;
-            let velocity = self.curve.velocity(parameter);
+            let (segment, local) = self.segment_at(parameter);
+            let offset = segment.position(local) - target;
+            let velocity = segment.velocity(local);
             let slope = velocity.dot(offset);
-            let curvature = self.curve.acceleration(parameter).dot(offset) + velocity.dot(velocity);
+            let curvature = segment.acceleration(local).dot(offset) + velocity.dot(velocity);
             // Only where the distance is convex: elsewhere the chord's point stands.
             if curvature <= 0.0 || !curvature.is_finite() {
                 break;
@@ -272,10 +303,34 @@ impl RailTrack {
             if distance.partial_cmp(&best) != Some(core::cmp::Ordering::Less) {
                 break;
             }
+            let settled = (next - parameter).abs() <= CONVERGED;
             (parameter, best) = (next, distance);
+            if settled {
+                break;
+            }
         }
         parameter
     }
+
+    /// The segment the curve's parameter `parameter` is on, and the parameter within it.
+    fn segment_at(&self, parameter: f32) -> (&CubicSegment<Vec3>, f32) {
+        let segments = self.curve.segments();
+        let last = segments.len().saturating_sub(1);
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "clamped to the segments"
+        )]
+        let index = parameter.floor().clamp(0.0, last as f32) as usize;
+        (&segments[index], parameter - index as f32)
+    }
+}
+
+/// A place on a rail: how far along it, and the curve's parameter there.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) struct RailPlace {
+    pub(crate) distance: f32,
+    pub(crate) parameter: f32,
 }
 
 #[cfg(test)]
@@ -311,12 +366,43 @@ mod tests {
         for distance in [0.0, 0.3, 17.25, 150.0, 299.9] {
             let point = track.position_at(distance);
             assert!((point.x - distance).abs() < 1e-3, "{distance}: {point}");
-            let back = track.nearest(point + Vec3::new(0.0, 40.0, -3.0), None);
+            let back = track
+                .nearest(point + Vec3::new(0.0, 40.0, -3.0), None)
+                .distance;
             assert!((back - distance).abs() < 1e-3, "{distance}: {back}");
         }
         // Past the ends: clamped.
         assert_eq!(track.position_at(-5.0), Vec3::ZERO);
         assert!((track.position_at(400.0).x - 300.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn distance_and_parameter_are_inverse_however_unevenly_the_curve_runs() {
+        // Crawling through its first half and racing through its second: a constant speed's
+        // guess of the chord is far off, and the search falls back to the whole table.
+        let curve = CubicBezier::new([
+            [
+                Vec3::ZERO,
+                Vec3::new(1.0, 0.0, 0.0),
+                Vec3::new(2.0, 0.0, 0.0),
+                Vec3::new(3.0, 1.0, 0.0),
+            ],
+            [
+                Vec3::new(3.0, 1.0, 0.0),
+                Vec3::new(900.0, 300.0, 0.0),
+                Vec3::new(1800.0, -300.0, 0.0),
+                Vec3::new(2700.0, 0.0, 0.0),
+            ],
+        ])
+        .to_curve()
+        .unwrap();
+        let track = RailTrack::new(&curve, false);
+        for i in 0..=400 {
+            let parameter = i as f32 / 200.0;
+            let distance = track.distance_at(parameter);
+            let back = track.parameter_at(distance);
+            assert!((back - parameter).abs() < 1e-4, "{parameter}: {back}");
+        }
     }
 
     #[test]
@@ -344,7 +430,8 @@ mod tests {
         for i in 0..50 {
             let angle = i as f32 * 0.37;
             let target = Vec3::new(angle.cos(), 0.3, angle.sin()) * 620.0;
-            let distance = track.nearest(target, None);
+            let place = track.nearest(target, None);
+            let distance = place.distance;
             let point = track.position_at(distance);
             // The nearest point: the offset to it is normal to the curve.
             let direction = track.direction_at(distance).normalize();
@@ -362,7 +449,9 @@ mod tests {
                 .fold(f32::INFINITY, f32::min);
             assert!(offset.length() <= nearest + 1e-3);
             // Warm-started from close by, the same point.
-            let warm = track.nearest(target, Some(track.on_rail(distance + 30.0)));
+            let warm = track
+                .nearest(target, Some(track.parameter_at(distance + 30.0)))
+                .distance;
             assert!(
                 track.toward(distance, warm).abs() < 1e-2,
                 "{distance} {warm}"
@@ -398,9 +487,11 @@ mod tests {
         let track = RailTrack::new(&curve, false);
         // Just nearer the way back, but followed on the way out.
         let target = Vec3::new(150.0, 5.5, 0.0);
-        let cold = track.nearest(target, None);
+        let cold = track.nearest(target, None).distance;
         assert!(track.position_at(cold).y > 9.0);
-        let warm = track.nearest(target, Some(140.0));
+        let warm = track
+            .nearest(target, Some(track.parameter_at(140.0)))
+            .distance;
         assert!((warm - 150.0).abs() < 1e-2, "{warm}");
     }
 
@@ -408,14 +499,14 @@ mod tests {
     #[expect(clippy::float_cmp, reason = "the start of a rail is exact")]
     fn degenerate_input_stays_finite() {
         let track = RailTrack::new(&straight(), false);
-        assert_eq!(track.nearest(Vec3::NAN, None), 0.0);
-        assert_eq!(track.nearest(Vec3::ZERO, Some(f32::NAN)), 0.0);
+        assert_eq!(track.nearest(Vec3::NAN, None), RailPlace::default());
+        assert_eq!(track.nearest(Vec3::ZERO, Some(f32::NAN)).distance, 0.0);
         assert_eq!(track.on_rail(f32::INFINITY), 0.0);
         let point = CubicBezier::new([[Vec3::ONE; 4]]).to_curve().unwrap();
         let track = RailTrack::new(&point, true);
         assert_eq!(track.length(), 0.0);
         assert_eq!(track.position_at(10.0), Vec3::ONE);
-        assert_eq!(track.nearest(Vec3::X, None), 0.0);
+        assert_eq!(track.nearest(Vec3::X, None).distance, 0.0);
         assert_eq!(track.toward(0.0, 3.0), 3.0);
     }
 }
