@@ -227,6 +227,37 @@ fn a_place_ahead_or_driven_is_where_the_camera_rests() {
     }
 }
 
+/// A roll curve along the rail turns the camera about its view by the roll read at its place:
+/// rising from 0 at the start to 0.6 rad at the end of a straight rail.
+#[test]
+fn a_roll_curve_turns_the_camera_about_its_view() {
+    for fps in RATES {
+        let (mut app, player) = camera_app(fps, (800, 600), |_| Vec3::new(-2000.0, 0.0, 0.0));
+        // One roll segment per rail segment: the roll at each of the rail's points.
+        let points = (-5..=5).map(|i| 0.06 * (i + 5) as f32).collect::<Vec<_>>();
+        let roll = CubicCardinalSpline::new_catmull_rom(points)
+            .to_curve()
+            .unwrap();
+        let rail = CameraRail::new(straight_rail(-5000, 5000, RAIL_DEPTH))
+            .aiming(RailAim::Along)
+            .with_roll(roll);
+        let camera = rail_camera(&mut app, player, Spring::smooth(), rail);
+        for _ in 0..fps * 3 {
+            app.update();
+        }
+        // At x = -2000, three tenths of the way: 0.18 rad, about the way it looks (+x).
+        let transform = *app.world().get::<Transform>(camera).unwrap();
+        assert!((transform.translation.x + 2000.0).abs() < 1e-2);
+        assert!(transform.forward().dot(Vec3::X) > 0.9999);
+        let unrolled = Transform::default().looking_to(Vec3::X, Vec3::Y);
+        let roll = (unrolled.rotation.inverse() * transform.rotation).to_scaled_axis();
+        assert!(
+            (roll - Vec3::new(0.0, 0.0, 0.18)).length() < 1e-4,
+            "{fps} fps: rolled {roll}"
+        );
+    }
+}
+
 const JUMP: Vec3 = Vec3::new(3000.0, 0.0, 0.0);
 
 fn running_with_a_respawn(t: f32) -> Vec3 {
