@@ -258,6 +258,37 @@ fn a_roll_curve_turns_the_camera_about_its_view() {
     }
 }
 
+/// A rail camera with no goal yet (not finite: its target not found) starts at the target's
+/// place once there is one, with no fly-in from the rail's start.
+#[test]
+fn a_rail_camera_starts_where_its_first_goal_is() {
+    let (mut app, player) = camera_app(60, (800, 600), |_| Vec3::new(2000.0, 0.0, 0.0));
+    let rail = CameraRail::new(straight_rail(-5000, 5000, RAIL_DEPTH));
+    let camera = app
+        .world_mut()
+        .spawn((
+            Camera3d::default(),
+            CameraRig::new(Spring::smooth()),
+            CameraTargets::single(Entity::PLACEHOLDER),
+            CameraGoal {
+                point: Vec3::NAN,
+                spread: Vec2::ZERO,
+            },
+            rail,
+        ))
+        .id();
+    for _ in 0..10 {
+        app.update();
+    }
+    // The target given now: the camera is on its place in the same frame.
+    app.world_mut()
+        .entity_mut(camera)
+        .insert(CameraTargets::single(player));
+    app.update();
+    let at = translation(&app, camera);
+    assert!((at.x - 2000.0).abs() < 1e-2, "{at}");
+}
+
 const JUMP: Vec3 = Vec3::new(3000.0, 0.0, 0.0);
 
 fn running_with_a_respawn(t: f32) -> Vec3 {

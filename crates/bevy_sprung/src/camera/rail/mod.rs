@@ -220,6 +220,8 @@ pub(crate) struct RailState {
     nearest: Option<f32>,
     /// The place the camera sprang to last frame, for its velocity.
     last_goal: Option<f32>,
+    /// The camera has been put on the rail (at its first place to go: no fly-in).
+    placed: bool,
 }
 
 #[cfg(feature = "debug")]
@@ -280,7 +282,6 @@ pub(super) fn follow_rails(time: SpringTime, mut rails: Query<Railed>) {
             Some(track) => rail.is_changed() && !track.is_of(&rail.curve, rail.looped),
             None => true,
         };
-        let first_frame = state.track.is_none();
         if replaced {
             let track = RailTrack::new(&rail.curve, rail.looped);
             if track.looped() && track.gap() > 1e-3 {
@@ -289,7 +290,7 @@ pub(super) fn follow_rails(time: SpringTime, mut rails: Query<Railed>) {
                      camera jumps across the gap; build it with to_curve_cyclic"
                 );
             }
-            if !first_frame {
+            if state.placed {
                 // On the new rail where it stood, going on at its speed along the rail.
                 motion.distance = track.nearest(camera.translation, None).distance;
             }
@@ -305,6 +306,7 @@ pub(super) fn follow_rails(time: SpringTime, mut rails: Query<Railed>) {
             track: Some(track),
             nearest,
             last_goal,
+            placed,
         } = &mut *state
         else {
             continue;
@@ -328,8 +330,9 @@ pub(super) fn follow_rails(time: SpringTime, mut rails: Query<Railed>) {
         };
         let velocity = if velocity.is_finite() { velocity } else { 0.0 };
         *last_goal = Some(place);
-        if first_frame {
+        if !*placed {
             motion.distance = place;
+            *placed = true;
         }
         // The camera's place stays on the rail's range, and the place it springs to is the
         // one the shorter way from it, so a loop wraps without a jump.
