@@ -61,7 +61,7 @@ pub(crate) fn camera_app(
 }
 
 /// A 2D camera with its rig.
-fn camera_2d(rig: CameraRig) -> impl Bundle {
+pub(crate) fn camera_2d(rig: CameraRig) -> impl Bundle {
     (
         Camera2d,
         Projection::Orthographic(OrthographicProjection::default_2d()),
@@ -230,19 +230,20 @@ fn running_with_a_respawn(t: f32) -> Vec3 {
     Vec3::new(-500.0, 40.0, 0.0) + Vec3::new(240.0, 0.0, 0.0) * t + carried
 }
 
-/// Gameplay tells the rigs of the respawn in the frame it happens.
-fn tell_of_the_respawn(
-    time: Res<Time>,
-    players: Query<Entity, With<Player>>,
-    mut commands: Commands,
-) {
-    let now = time.elapsed_secs();
-    if now >= 4.5 && now - time.delta_secs() < 4.5 {
-        for player in &players {
-            commands.trigger(TargetWarped {
-                entity: player,
-                delta: JUMP,
-            });
+/// Gameplay telling the rigs of a respawn that carries the players by `jump` at t = 4.5 s, in
+/// the frame it happens.
+pub(crate) fn tell_of_a_respawn(
+    jump: Vec3,
+) -> impl FnMut(Res<Time>, Query<Entity, With<Player>>, Commands) {
+    move |time, players, mut commands| {
+        let now = time.elapsed_secs();
+        if now >= 4.5 && now - time.delta_secs() < 4.5 {
+            for player in &players {
+                commands.trigger(TargetWarped {
+                    entity: player,
+                    delta: jump,
+                });
+            }
         }
     }
 }
@@ -260,7 +261,7 @@ fn a_teleported_target_carries_the_camera_instead_of_flinging_it() {
         for pattern in patterns() {
             let (mut app, player) = camera_app(60, (800, 600), running_with_a_respawn);
             if told {
-                app.add_systems(Update, tell_of_the_respawn.after(move_player));
+                app.add_systems(Update, tell_of_a_respawn(JUMP).after(move_player));
             }
             let rig = if told {
                 CameraRig::new(spring)

@@ -25,6 +25,7 @@ use bevy_sprung::spring::SpringMotion;
 
 use bevy_sprung::ui::MomentumScroll;
 
+use crate::camera::camera_2d;
 use crate::harness::{app, primary_window, run};
 
 /// A headless app at `fps` with the overlay (and what gizmos need: assets, input).
@@ -317,11 +318,16 @@ fn without_bevy_s_gizmos_the_overlay_says_so_and_draws_nothing() {
     assert!(!app.world().contains_resource::<GizmoConfigStore>());
 }
 
+/// The lowest and highest corners of a drawn strip's box.
+fn bounds(strip: &[Vec3]) -> (Vec3, Vec3) {
+    strip
+        .iter()
+        .fold((Vec3::MAX, Vec3::MIN), |(l, h), p| (l.min(*p), h.max(*p)))
+}
+
 /// The width and height of a drawn strip.
 fn extent(strip: &[Vec3]) -> Vec2 {
-    let (low, high) = strip
-        .iter()
-        .fold((Vec3::MAX, Vec3::MIN), |(l, h), p| (l.min(*p), h.max(*p)));
+    let (low, high) = bounds(strip);
     (high - low).truncate()
 }
 
@@ -355,9 +361,7 @@ fn a_rail_and_a_hard_limit_are_drawn_where_they_act() {
     let camera = app
         .world_mut()
         .spawn((
-            Camera2d,
-            Projection::Orthographic(OrthographicProjection::default_2d()),
-            CameraRig::new(Spring::smooth()),
+            camera_2d(CameraRig::new(Spring::smooth())),
             CameraTargets::single(player),
             CameraRail::new(rail).aiming(RailAim::Unchanged),
         ))
@@ -366,9 +370,7 @@ fn a_rail_and_a_hard_limit_are_drawn_where_they_act() {
     let limited = app
         .world_mut()
         .spawn((
-            Camera2d,
-            Projection::Orthographic(OrthographicProjection::default_2d()),
-            CameraRig::new(Spring::smooth()),
+            camera_2d(CameraRig::new(Spring::smooth())),
             CameraTargets::single(player),
             HardLimit::view(Vec2::new(0.8, 0.6)),
         ))
@@ -406,9 +408,7 @@ fn a_rail_and_a_hard_limit_are_drawn_where_they_act() {
             let drawn = strips_in::<CameraRigGizmos>(&app, color);
             assert_eq!(drawn.len(), 1, "frame {frame}");
             assert!((extent(&drawn[0]) - size).length() < 1e-2, "frame {frame}");
-            let (low, high) = drawn[0]
-                .iter()
-                .fold((Vec3::MAX, Vec3::MIN), |(l, h), p| (l.min(*p), h.max(*p)));
+            let (low, high) = bounds(&drawn[0]);
             let centre = (low + high).truncate() * 0.5;
             let looking = world_position(&app, limited).truncate();
             assert!(

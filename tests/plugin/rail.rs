@@ -13,9 +13,8 @@ use bevy_sprung::camera::{
 };
 use bevy_sprung::prelude::*;
 use bevy_sprung::spring::SpringAsleep;
-use bevy_sprung::tracking::TargetWarped;
 
-use crate::camera::{Player, RATES, camera_app, move_player, patterns, translation};
+use crate::camera::{RATES, camera_app, move_player, patterns, tell_of_a_respawn, translation};
 use crate::harness::run_pattern;
 
 /// Where the straight rail runs: along x, 200 up and 500 back.
@@ -296,23 +295,6 @@ fn running_with_a_respawn(t: f32) -> Vec3 {
     Vec3::new(-1500.0 + 240.0 * t, 0.0, 0.0) + carried
 }
 
-/// Gameplay tells the rigs of the respawn in the frame it happens.
-fn tell_of_the_respawn(
-    time: Res<Time>,
-    players: Query<Entity, With<Player>>,
-    mut commands: Commands,
-) {
-    let now = time.elapsed_secs();
-    if now >= 4.5 && now - time.delta_secs() < 4.5 {
-        for player in &players {
-            commands.trigger(TargetWarped {
-                entity: player,
-                delta: JUMP,
-            });
-        }
-    }
-}
-
 /// A target carried along the rail in one frame, told or caught by the rig's teleport
 /// distance: the camera is carried too, at the same lag behind it, instead of flying down the
 /// rail.
@@ -324,7 +306,7 @@ fn a_warped_target_carries_the_camera_along_the_rail() {
         for pattern in patterns_and_hitch() {
             let (mut app, player) = camera_app(60, (800, 600), running_with_a_respawn);
             if told {
-                app.add_systems(Update, tell_of_the_respawn.after(move_player));
+                app.add_systems(Update, tell_of_a_respawn(JUMP).after(move_player));
             }
             let rail = CameraRail::new(straight_rail(-5000, 9000, RAIL_DEPTH));
             let camera = rail_camera(&mut app, player, spring, rail);

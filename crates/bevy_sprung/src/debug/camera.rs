@@ -170,13 +170,30 @@ fn draw_dead_zone(gizmos: &mut Gizmos<CameraRigGizmos>, framing: &CameraFraming)
 
 /// A hard limit of half extents `half` placed at `at`, and the band `slowing` wide inside it.
 fn draw_limit(gizmos: &mut Gizmos<CameraRigGizmos>, at: Isometry3d, half: Vec2, slowing: f32) {
-    if half == Vec2::ZERO {
-        return;
+    if half != Vec2::ZERO {
+        draw_banded(
+            gizmos,
+            at,
+            2.0 * half,
+            slowing,
+            [css::TOMATO, css::DARK_SALMON],
+        );
     }
-    gizmos.rect(at, 2.0 * half, css::TOMATO);
-    let inner = half - Vec2::splat(slowing);
-    if slowing > 0.0 && inner.cmpgt(Vec2::ZERO).all() {
-        gizmos.rect(at, 2.0 * inner, css::DARK_SALMON);
+}
+
+/// A rectangle `size` placed at `at` in `colors[0]`, and in `colors[1]` the edge of the band
+/// `slowing` wide inside it (when there is room for one).
+fn draw_banded(
+    gizmos: &mut Gizmos<CameraRigGizmos>,
+    at: Isometry3d,
+    size: Vec2,
+    slowing: f32,
+    [outer, inner]: [Srgba; 2],
+) {
+    gizmos.rect(at, size, outer);
+    let within = size - Vec2::splat(2.0 * slowing);
+    if slowing > 0.0 && within.cmpgt(Vec2::ZERO).all() {
+        gizmos.rect(at, within, inner);
     }
 }
 
@@ -195,12 +212,14 @@ fn draw_rail(gizmos: &mut Gizmos<CameraRigGizmos>, state: &RailState, distance: 
 
 /// A confiner's bounds in the plane `z`, and the band `slowing` wide inside them.
 fn draw_bounds(gizmos: &mut Gizmos<CameraRigGizmos>, bounds: Rect, z: f32, slowing: f32) {
-    let at = |rect: Rect| Isometry3d::from_translation(rect.center().extend(z));
-    gizmos.rect(at(bounds), bounds.size(), css::CRIMSON);
-    let inner = bounds.inflate(-slowing.max(0.0));
-    if slowing > 0.0 && !inner.is_empty() {
-        gizmos.rect(at(inner), inner.size(), css::DARK_RED);
-    }
+    let at = Isometry3d::from_translation(bounds.center().extend(z));
+    draw_banded(
+        gizmos,
+        at,
+        bounds.size(),
+        slowing,
+        [css::CRIMSON, css::DARK_RED],
+    );
 }
 
 /// A confiner volume, and the band `slowing_distance` wide inside it.
