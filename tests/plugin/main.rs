@@ -25,6 +25,7 @@ mod follow;
 mod forecast;
 mod implicit;
 mod inertia;
+mod inertialization;
 mod interaction;
 mod juice;
 mod layers;

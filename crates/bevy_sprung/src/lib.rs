@@ -57,8 +57,8 @@
 //! - the features, which join the mechanism's sets or observe its events and which it never
 //!   imports: [`choreography`], [`presence`] (built on choreography), [`follow`], `camera`
 //!   (built on follow), [`juice`] (built on [`layers`]), [`chain`], [`inertia`],
-//!   [`reduced_motion`], `interaction` (built on inertia), `asset` and `visibility` (behind
-//!   their features);
+//!   [`reduced_motion`], `interaction` (built on inertia), `inertialization`, `asset` and
+//!   `visibility` (behind their features);
 //! - on top, [`SpringPropertyPlugin`], which adds one property with the mechanism and every
 //!   feature's part of it, the plugins of the built-in properties ([`SpringTransformPlugin`],
 //!   `SpringColorPlugin`, `SpringUiPlugin`), and [`SpringPlugins`].
@@ -76,6 +76,8 @@
 //!   `ImageNode` colour (`color` + `bevy/bevy_ui`).
 //! - `picking`: `interaction`: `InteractionState`, `InteractionTargets`, `SpringDrag`
 //!   (`bevy/bevy_picking`; the app adds a picking backend).
+//! - `animation`: [`Inertialization`](inertialization::Inertialization), clip changes in
+//!   `bevy_animation` that never pop (`bevy/bevy_animation`).
 //! - `serde`: `Serialize`/`Deserialize` for [`Spring`](sprung::Spring), `RestThreshold`,
 //!   [`SpringClock`](clock::SpringClock) and the spring components' configuration.
 #![cfg_attr(docsrs, feature(doc_cfg))]
@@ -104,6 +106,8 @@ pub mod designer;
 pub mod follow;
 pub mod implicit;
 pub mod inertia;
+#[cfg(feature = "animation")]
+pub mod inertialization;
 #[cfg(feature = "picking")]
 pub mod interaction;
 pub mod juice;
@@ -158,6 +162,13 @@ pub mod guides {
     #[doc = include_str!("../docs/motion.md")]
     pub mod motion {}
 
+    /// Animation transitions by inertialization: clip switches in `bevy_animation` that never
+    /// pop, concept by concept (Unreal's and Unity's inertialization, Holden's
+    /// "Spring-It-On"), and the code that does it. (Feature `animation`.)
+    #[cfg(feature = "animation")]
+    #[doc = include_str!("../docs/animation.md")]
+    pub mod animation {}
+
     /// Camera rigs, concept by concept: each Cinemachine, smooth-bevy-cameras and `bevy_dolly`
     /// idea and the code that does it with [`CameraRig`](crate::camera::CameraRig).
     #[cfg(feature = "camera")]
@@ -198,6 +209,8 @@ pub mod prelude {
     pub use crate::follow::SpringFollow;
     pub use crate::implicit::ImplicitSpring;
     pub use crate::inertia::Inertia;
+    #[cfg(feature = "animation")]
+    pub use crate::inertialization::Inertialization;
     #[cfg(feature = "picking")]
     pub use crate::interaction::{InteractionState, InteractionTargets, SpringDrag};
     pub use crate::juice::{Shake, SquashStretch};

@@ -178,6 +178,8 @@ impl PluginGroup for SpringPlugins {
         let group = group.add(crate::interaction::SpringInteractionPlugin);
         #[cfg(feature = "camera")]
         let group = group.add(crate::camera::SpringCameraPlugin);
+        #[cfg(feature = "animation")]
+        let group = group.add(crate::inertialization::SpringInertializationPlugin);
         group
     }
 }

@@ -1,0 +1,91 @@
+//! The systems of inertialization: each frame's blend step per player, the clip's pose put back
+//! before animation, the offsets added after it; and the joints' state kept as players and
+//! joints come and go.
+
+use bevy::animation::AnimatedBy;
+use bevy::prelude::*;
+
+use super::Inertialization;
+use super::joint::InertialJoint;
+use super::pose::Pose;
+use crate::clock::{SpringClock, SpringTime};
+
+/// Each player's `BlendFrame`: its blend spring stepped over this frame, on the game clock
+/// the animation plays on.
+pub(crate) fn prepare_frames(time: SpringTime, mut players: Query<&mut Inertialization>) {
+    let dt = time.delta(Some(SpringClock::Game));
+    for mut player in &mut players {
+        player.prepare(dt);
+    }
+}
+
+/// Before animation: the joints that show an offset get their clip's pose back, so that what
+/// the animation does not write this frame is the clip's and not last frame's offset pose.
+pub(crate) fn restore_clip_poses(mut joints: Query<(&InertialJoint, &mut Transform)>) {
+    joints.par_iter_mut().for_each(|(joint, mut transform)| {
+        if joint.is_blending() {
+            joint.restore_clip_pose(&mut transform);
+        }
+    });
+}
+
+/// After animation: each joint of an inertialized player takes the pose the animation gave it,
+/// starts a blend if its player switched, steps its offset, and shows clip + offset. Joints of
+/// players that are gone or no longer inertialized drop their blend.
+pub(crate) fn blend_joints(
+    players: Query<&Inertialization>,
+    mut joints: Query<(&AnimatedBy, &mut Transform, &mut InertialJoint)>,
+) {
+    joints
+        .par_iter_mut()
+        .for_each(|(&AnimatedBy(player), mut transform, mut joint)| {
+            let Ok(player) = players.get(player) else {
+                joint.forget();
+                return;
+            };
+            let clip = Pose::of(&transform);
+            let shown = joint.advance(clip, player.frame());
+            if shown != clip {
+                transform.translation = shown.translation;
+                transform.rotation = shown.rotation;
+                transform.scale = shown.scale;
+            }
+        });
+}
+
+/// A joint animated by an inertialized player (a scene spawning under it, a joint moved to it)
+/// is given a fresh state: it has seen the player's transitions so far.
+pub(crate) fn track_animated_joint(
+    animated: On<Insert, AnimatedBy>,
+    joints: Query<(&AnimatedBy, &Transform)>,
+    players: Query<&Inertialization>,
+    mut commands: Commands,
+) {
+    let joint = animated.entity;
+    if let Ok((&AnimatedBy(player), transform)) = joints.get(joint)
+        && let Ok(player) = players.get(player)
+    {
+        commands
+            .entity(joint)
+            .try_insert(InertialJoint::at(Pose::of(transform), player.transitions()));
+    }
+}
+
+/// A player given an [`Inertialization`] gives a fresh state to the joints it already animates
+/// (any state from an earlier one is dropped).
+pub(crate) fn track_player_joints(
+    inertialized: On<Add, Inertialization>,
+    joints: Query<(Entity, &AnimatedBy, &Transform)>,
+    players: Query<&Inertialization>,
+    mut commands: Commands,
+) {
+    let player = inertialized.entity;
+    let transitions = players.get(player).map_or(0, Inertialization::transitions);
+    for (joint, &AnimatedBy(by), transform) in &joints {
+        if by == player {
+            commands
+                .entity(joint)
+                .try_insert(InertialJoint::at(Pose::of(transform), transitions));
+        }
+    }
+}
