@@ -84,8 +84,8 @@ struct PendingSwitch {
 
 /// How small an offset's parts must get, as a fraction of their sizes when the blend began,
 /// before the joint shows the clip's pose exactly (the last jump is that much of the first
-/// offset: far below what shows).
-const REST_FRACTION: f32 = 1e-5;
+/// offset: a tenth of a millimetre for a metre, far below what shows).
+const REST_FRACTION: f32 = 1e-4;
 
 impl InertialJoint {
     /// A joint showing `pose`, having seen `transitions` of its player: no rate known yet, no
@@ -225,7 +225,7 @@ impl JointBlend {
     }
 
     /// The size of the offset in each unit: how far it is, plus how far its velocity would carry
-    /// it in `1/ω` (the spring's time scale).
+    /// it in `1/ω` (the spring's time scale), each in the largest of its three axes.
     fn size(&self, omega: f32) -> Vec3 {
         self.offset.position.sizes() + self.offset.velocity.sizes() / omega
     }

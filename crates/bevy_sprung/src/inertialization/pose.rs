@@ -55,7 +55,8 @@ impl Pose {
     pub(crate) fn plus(&self, delta: &PoseDelta) -> Self {
         Self {
             translation: self.translation + delta.translation,
-            rotation: (Quat::from_scaled_axis(delta.rotation) * self.rotation).normalize(),
+            // Both factors are unit quaternions: the product is one to rounding.
+            rotation: Quat::from_scaled_axis(delta.rotation) * self.rotation,
             scale: self.scale + delta.scale,
         }
     }
@@ -73,13 +74,14 @@ impl Pose {
 }
 
 impl PoseDelta {
-    /// The largest part of the delta in each of its three units: translation, radians, scale.
+    /// The size of the delta in each of its three units (translation, radians, scale): the
+    /// largest axis of each, within `√3` of its length and free of square roots.
     #[inline]
     pub(crate) fn sizes(&self) -> Vec3 {
         Vec3::new(
-            self.translation.length(),
-            self.rotation.length(),
-            self.scale.length(),
+            self.translation.abs().max_element(),
+            self.rotation.abs().max_element(),
+            self.scale.abs().max_element(),
         )
     }
 }

@@ -6,7 +6,7 @@ use bevy::animation::AnimatedBy;
 use bevy::prelude::*;
 
 use super::Inertialization;
-use super::joint::InertialJoint;
+use super::joint::{BlendFrame, InertialJoint};
 use super::pose::Pose;
 use crate::clock::{SpringClock, SpringTime};
 
@@ -22,11 +22,11 @@ pub(crate) fn prepare_frames(time: SpringTime, mut players: Query<&mut Inertiali
 /// Before animation: the joints that show an offset get their clip's pose back, so that what
 /// the animation does not write this frame is the clip's and not last frame's offset pose.
 pub(crate) fn restore_clip_poses(mut joints: Query<(&InertialJoint, &mut Transform)>) {
-    joints.par_iter_mut().for_each(|(joint, mut transform)| {
+    for (joint, mut transform) in &mut joints {
         if joint.is_blending() {
             joint.restore_clip_pose(&mut transform);
         }
-    });
+    }
 }
 
 /// After animation: each joint of an inertialized player takes the pose the animation gave it,
@@ -36,21 +36,29 @@ pub(crate) fn blend_joints(
     players: Query<&Inertialization>,
     mut joints: Query<(&AnimatedBy, &mut Transform, &mut InertialJoint)>,
 ) {
-    joints
-        .par_iter_mut()
-        .for_each(|(&AnimatedBy(player), mut transform, mut joint)| {
-            let Ok(player) = players.get(player) else {
-                joint.forget();
-                return;
-            };
-            let clip = Pose::of(&transform);
-            let shown = joint.advance(clip, player.frame());
-            if shown != clip {
-                transform.translation = shown.translation;
-                transform.rotation = shown.rotation;
-                transform.scale = shown.scale;
+    // A player's joints are mostly stored together: look the player up once per run of them.
+    let mut last: Option<(Entity, Option<BlendFrame>)> = None;
+    for (&AnimatedBy(player), mut transform, mut joint) in &mut joints {
+        let frame = match last {
+            Some((entity, frame)) if entity == player => frame,
+            _ => {
+                let frame = players.get(player).ok().map(|player| *player.frame());
+                last = Some((player, frame));
+                frame
             }
-        });
+        };
+        let Some(frame) = frame else {
+            joint.forget();
+            continue;
+        };
+        let clip = Pose::of(&transform);
+        let shown = joint.advance(clip, &frame);
+        if shown != clip {
+            transform.translation = shown.translation;
+            transform.rotation = shown.rotation;
+            transform.scale = shown.scale;
+        }
+    }
 }
 
 /// A joint animated by an inertialized player (a scene spawning under it, a joint moved to it)
