@@ -1,7 +1,7 @@
 //! Animation transitions by inertialization: `bevy_animation` clip changes that never pop, at
 //! the cost of one clip.
 //!
-//! A cross-fade ([`AnimationTransitions`](bevy::animation::transition::AnimationTransitions))
+//! A cross-fade ([`AnimationTransitions`])
 //! evaluates the old and the new clip for the whole fade and blends them. Inertialization (as
 //! Unreal's Inertialization node and Unity's inertialized transitions do, and as Daniel
 //! Holden's "Spring-It-On" derives it) switches to the new clip at once and records, per joint,
@@ -38,7 +38,7 @@ const ONE_PERCENT_AT: f32 = 6.638_352;
 /// each joint's offset from the pose that was shown (translation, rotation on the short arc,
 /// scale, and their velocities) decays to zero on an exact critically damped spring.
 ///
-/// Use it as [`AnimationTransitions`](bevy::animation::transition::AnimationTransitions) is
+/// Use it as [`AnimationTransitions`] is
 /// used: put it on the entity with the `AnimationPlayer` (it requires one) and the
 /// `AnimationGraphHandle`, and start clips with [`play`](Self::play) rather than on the player.
 ///
