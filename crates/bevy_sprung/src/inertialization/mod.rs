@@ -92,9 +92,9 @@ const ONE_PERCENT_AT: f32 = 6.638_352;
 /// app.add_plugins((MinimalPlugins, AssetPlugin::default(), AnimationPlugin))
 ///     .add_plugins(SpringPlugins::default());
 /// let clip = app.world_mut().resource_mut::<Assets<AnimationClip>>().add(AnimationClip::default());
-/// let (graph, walk) = AnimationGraph::from_clip(clip);
+/// let (graph, node) = AnimationGraph::from_clip(clip);
 /// let graph = app.world_mut().resource_mut::<Assets<AnimationGraph>>().add(graph);
-/// app.insert_resource(Moves { walk })
+/// app.insert_resource(Moves { walk: node })
 ///     .add_systems(Update, walk);
 /// app.world_mut().spawn((AnimationGraphHandle(graph), Inertialization::default()));
 /// app.update();
