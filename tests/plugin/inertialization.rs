@@ -12,6 +12,7 @@ use bevy::asset::AssetPlugin;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::inertialization::Inertialization;
+use bevy_sprung::space::rotation_vector;
 
 use crate::harness::{app, frame, run};
 
@@ -255,6 +256,13 @@ impl Rig {
     }
 }
 
+/// The natural frequency of the blend spring of `blend`.
+fn blend_omega(blend: Duration) -> f32 {
+    Inertialization::blend_spring(blend)
+        .unwrap()
+        .natural_frequency()
+}
+
 /// The angle between two rotations (`Quat::angle_between` goes through `acos`, whose `f32`
 /// rounding alone is ~7e-4 rad near zero).
 fn angle(a: Quat, b: Quat) -> f32 {
@@ -281,21 +289,6 @@ impl Lcg {
             .wrapping_add(1_442_695_040_888_963_407);
         (self.0 >> 40) as f32 / (1u64 << 24) as f32
     }
-}
-
-/// The rotation vector (axis × angle, short arc) of `rotation`, precise for small angles.
-fn rotation_vector(rotation: Quat) -> Vec3 {
-    let rotation = if rotation.w < 0.0 {
-        -rotation
-    } else {
-        rotation
-    };
-    let axis = rotation.xyz();
-    let s = axis.length();
-    if s == 0.0 {
-        return Vec3::ZERO;
-    }
-    axis * (2.0 * s.atan2(rotation.w) / s)
 }
 
 /// The most a joint may move in the frame of a switch without a pop (per unit: translation,
@@ -329,9 +322,7 @@ fn switch_run(
     rig.play(Move::Sway, Duration::ZERO);
     run(&mut rig.app, 2);
     let dt = frame(fps).as_secs_f32();
-    let omega = Inertialization::blend_spring(blend)
-        .unwrap()
-        .natural_frequency();
+    let omega = blend_omega(blend);
     let mut frames = vec![rig.poses()];
     let mut playing = Move::Sway;
     let mut pending = switches.iter().copied().peekable();
@@ -419,9 +410,7 @@ fn the_offset_decays_exactly_and_reaches_the_new_clip() {
     let fps = 60;
     let dt = frame(fps).as_secs_f32();
     let blend = Duration::from_millis(400);
-    let omega = Inertialization::blend_spring(blend)
-        .unwrap()
-        .natural_frequency();
+    let omega = blend_omega(blend);
     let decay =
         |x0: Vec3, v0: Vec3, tau: f32| (x0 + (v0 + x0 * omega) * tau) * (-omega * tau).exp();
     let envelope = |x0: Vec3, v0: Vec3, tau: f32| {
@@ -583,9 +572,7 @@ fn joints_animated_by_one_clip_only_move_smoothly() {
         .distance(frames[switch_frame - 2][2].translation)
         / dt;
     let last = frames.last().unwrap()[2];
-    let omega = Inertialization::blend_spring(blend)
-        .unwrap()
-        .natural_frequency();
+    let omega = blend_omega(blend);
     assert!(
         last.translation.distance(before.translation) < speed * (dt + 1.0 / omega) + 1e-4,
         "{} from {}",
@@ -823,9 +810,7 @@ fn a_gltf_skin_switches_without_a_pop() {
     // Turn's pose a frame in (its start, within a frame's turn).
     let turn_start = rotations(&app);
     run(&mut app, 19);
-    let omega = Inertialization::blend_spring(blend)
-        .unwrap()
-        .natural_frequency();
+    let omega = blend_omega(blend);
     let mut earlier = rotations(&app);
     app.update();
     let mut before = rotations(&app);

@@ -3,7 +3,8 @@
 use bevy::prelude::*;
 use sprung::{SpringState, Transition};
 
-use super::pose::{Pose, PoseDelta, rotation_vector};
+use super::pose::{Pose, PoseDelta};
+use crate::space::rotation_vector;
 
 /// What a player's joints need this frame: its transition count, the step of its blend spring
 /// over this frame (`None`: switches are instant), and the frame's time.

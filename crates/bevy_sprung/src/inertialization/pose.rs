@@ -4,6 +4,8 @@ use core::ops::{Add, Mul, Sub};
 
 use bevy::prelude::*;
 
+use crate::space::rotation_vector;
+
 /// A joint's local pose: the three parts of its `Transform`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Pose {
@@ -120,29 +122,6 @@ impl Mul<f32> for PoseDelta {
             scale: self.scale * factor,
         }
     }
-}
-
-/// The rotation vector (axis × angle, the angle in `[0, π]`) of a unit quaternion, on the short
-/// arc.
-///
-/// Stable at every angle: the half angle is `atan2(|xyz|, w)`, which keeps full relative
-/// precision for tiny rotations, where `acos(w)` would lose them (a frame's turn of 1e-3 rad
-/// has `w = 1 − 1.25e-7`, at the last digits of an `f32`). Below `|xyz| = 1e-20` the ratio
-/// `2·atan2(s, w)/s` is its limit `2/w`.
-#[inline]
-pub(crate) fn rotation_vector(rotation: Quat) -> Vec3 {
-    // q and −q are the same rotation: take the one with w ≥ 0, whose angle is at most π.
-    let rotation = if rotation.w < 0.0 {
-        -rotation
-    } else {
-        rotation
-    };
-    let axis_part = rotation.xyz();
-    let s = axis_part.length();
-    if s < 1e-20 {
-        return axis_part * (2.0 / rotation.w.max(f32::MIN_POSITIVE));
-    }
-    axis_part * (2.0 * s.atan2(rotation.w) / s)
 }
 
 #[cfg(test)]
