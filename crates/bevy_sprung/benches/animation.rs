@@ -12,8 +12,10 @@
 //!   blended for the fade;
 //! - `inertialization`: `Inertialization::play`: the new clip alone, and the offsets decaying.
 //!
-//! After the run it prints each scene's mean frame and the ratio of inertialization's to the
-//! cross-fade's, measured in the same run.
+//! After the run it prints each scene's median frame and the ratio of inertialization's to the
+//! cross-fade's, measured in the same run. `-- count` (needs `valgrind`) counts instead the
+//! instructions of one second of each scene under callgrind, on one thread: deterministic, so
+//! the ratio holds on a noisy machine.
 
 use std::time::{Duration, Instant};
 
@@ -24,12 +26,16 @@ use bevy::animation::{
     prelude::{AnimatableCurve, AnimatableKeyframeCurve},
 };
 use bevy::asset::AssetPlugin;
+use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::inertialization::Inertialization;
 use bevy_sprung::prelude::*;
-use criterion::{Criterion, criterion_group, criterion_main};
+use callgrind::callgrind;
+use criterion::{Criterion, criterion_group};
 
+#[path = "support/callgrind.rs"]
+mod callgrind;
 #[path = "support/task_pools.rs"]
 mod task_pools;
 
@@ -286,4 +292,57 @@ fn transitions(c: &mut Criterion) {
 }
 
 criterion_group!(benches, transitions);
-criterion_main!(benches);
+
+/// The frames callgrind counts: one second, in which every character switches once.
+#[inline(never)]
+fn measured(app: &mut App) {
+    for _ in 0..FPS {
+        app.update();
+    }
+}
+
+/// Instructions of one second of `scene` under callgrind: every schedule on the counted thread,
+/// and one compute thread, so that animation's parallel iteration runs there too (transform
+/// propagation's parallel part, the same in every scene, runs on the compute thread).
+fn count(scene: Scene) -> u64 {
+    callgrind("*animation::measured", Some(1), &["one", scene.name()])
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("one") => {
+            let scene = Scene::ALL
+                .into_iter()
+                .find(|scene| scene.name() == args[1])
+                .expect("a scene name");
+            let mut app = app(scene);
+            for (_, schedule) in app.world_mut().resource_mut::<Schedules>().iter_mut() {
+                schedule.set_executor(SingleThreadedExecutor::new());
+            }
+            measured(&mut app);
+        }
+        Some("count") => {
+            let counts = Scene::ALL.map(count);
+            let per_joint =
+                |total: u64| total as f64 / f64::from(FPS) / (CHARACTERS * JOINTS) as f64;
+            println!(
+                "{CHARACTERS} characters of {JOINTS} joints, one second, instructions per joint per \
+                 frame (whole frame):"
+            );
+            for (scene, &total) in Scene::ALL.iter().zip(&counts) {
+                println!("  {:<16} {:>8.0}", scene.name(), per_joint(total));
+            }
+            let [one, fade, inertial] = counts.map(|total| total as f64);
+            println!(
+                "  inertialization / crossfade: {:.3}×  (beyond one clip: {:.2}×)",
+                inertial / fade,
+                (inertial - one) / (fade - one)
+            );
+        }
+        _ => {
+            benches();
+            Criterion::default().configure_from_args().final_summary();
+        }
+    }
+}

@@ -1,19 +1,20 @@
 //! One joint's inertialization: the poses it showed, and the offset that decays after a switch.
 
 use bevy::prelude::*;
-use sprung::{SpringState, Transition};
+use sprung::SpringState;
 
 use super::pose::{Pose, PoseDelta};
 use crate::space::rotation_vector;
 
-/// What a player's joints need this frame: its transition count, the step of its blend spring
-/// over this frame (`None`: switches are instant), and the frame's time.
+/// What a player's joints need this frame: its transition count, where its offsets stand on
+/// their decay, and the frame's time.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct BlendFrame {
     /// How many transitions the player has started: a joint that has seen fewer starts one.
     pub(crate) transitions: u32,
-    /// The exact step of the blend spring over `dt`, and its natural frequency.
-    pub(crate) step: Option<(Transition<f32>, f32)>,
+    /// Where the last transition's offsets stand on their decay (`None`: it was instant, or its
+    /// offsets are done).
+    pub(crate) decay: Option<Decay>,
     /// This frame's time on the animation's clock, in seconds.
     pub(crate) dt: f32,
 }
@@ -22,15 +23,26 @@ impl BlendFrame {
     /// A frame in which nothing has been started.
     pub(crate) const IDLE: Self = Self {
         transitions: 0,
-        step: None,
+        decay: None,
         dt: 0.0,
     };
+}
+
+/// The closed-form decay of every offset of one transition at one time after its switch: the
+/// offset is `from_offset·x₀ + from_rate·v₀`, for its value `x₀` and rate `v₀` at the switch.
+///
+/// All the joints of a transition share these two numbers (one spring, one switch time), so a
+/// joint's offset costs two multiply-adds per number, and no step accumulates rounding.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Decay {
+    pub(crate) from_offset: f32,
+    pub(crate) from_rate: f32,
 }
 
 /// What inertialization keeps of one joint of a player with an
 /// [`Inertialization`](super::Inertialization): the poses it showed in the last two frames (to
 /// know where it was heading), the pose the animation gave it, and, while a transition blends,
-/// the offset from that pose.
+/// the offset at the switch.
 #[derive(Component, Clone, Debug)]
 pub(crate) struct InertialJoint {
     /// The pose shown last frame, the one shown the frame before, and the time between them
@@ -38,11 +50,11 @@ pub(crate) struct InertialJoint {
     shown: Pose,
     before: Pose,
     step: f32,
-    /// The pose the animation gave last frame, before the offset.
+    /// The pose the animation gave last frame, before the offset (kept while blending).
     clip: Pose,
     /// The player's transition count this joint has seen.
     transitions: u32,
-    /// The offset shown − clip while a transition blends.
+    /// The offset of the transition in progress.
     blend: Option<JointBlend>,
 }
 
@@ -54,39 +66,25 @@ pub(crate) struct InertialJoint {
 /// a switch does not depend on the frames in between.
 #[derive(Clone, Copy, Debug)]
 struct JointBlend {
-    /// The difference shown − clip and its rate, decaying to zero on the blend spring (without
-    /// the new clip's part while that is [`pending`](Self::pending)).
-    offset: SpringState<PoseDelta>,
+    /// The offset shown − clip and its rate at the switch (without the new clip's part while
+    /// that is [`pending`](Self::pending)).
+    start: SpringState<PoseDelta>,
     /// The new clip's part of the offset, until the frame after the switch gives its rate.
     pending: Option<PendingSwitch>,
-    /// The sizes (translation, radians, scale) below which the offset is done.
-    rest: Vec3,
 }
 
 /// On the frame of a switch only the new clip's pose at the frame's end is known, not where it
-/// stood at the switch nor its rate. Both are its rate `w` times known factors (it stood
-/// `w·dt` back; the offset moves at the old rate less `w`), and the decay is linear in where it
-/// starts: so the offset is stepped without them, and what a unit of each would have added is
-/// stepped alongside, to be added once the next frame gives `w`.
+/// stood at the switch nor its rate `w`: it stood `w·dt` back, and the offset moves at the old
+/// rate less `w`. So the switch frame shows the offset without them, and the next frame, which
+/// gives `w`, puts them into the start.
 #[derive(Clone, Copy, Debug)]
 struct PendingSwitch {
-    /// What one unit of the clip's rate adds to the offset's position and velocity: `(dt, −1)`
-    /// at the switch, stepped since.
-    per_rate: SpringState<f32>,
-    /// What one unit more of the offset at the switch adds: `(1, 0)` at the switch, stepped
-    /// since. It carries the part of the rotation the rotation vectors do not add linearly.
-    per_offset: SpringState<f32>,
     /// The rotation shown at the switch, the clip's at the end of the switch's frame, and that
     /// frame's time.
     shown_rotation: Quat,
     clip_rotation: Quat,
     dt: f32,
 }
-
-/// How small an offset's parts must get, as a fraction of their sizes when the blend began,
-/// before the joint shows the clip's pose exactly (the last jump is that much of the first
-/// offset: a tenth of a millimetre for a metre, far below what shows).
-const REST_FRACTION: f32 = 1e-4;
 
 impl InertialJoint {
     /// A joint showing `pose`, having seen `transitions` of its player: no rate known yet, no
@@ -108,20 +106,24 @@ impl InertialJoint {
         self.blend.is_some()
     }
 
-    /// Puts back the animation's pose in each part of `transform` that still shows what this
-    /// joint wrote, so that a clip which does not animate a part starts from the clip's pose
-    /// and not from last frame's offset pose. Parts written by anything else since are kept.
+    /// The pose the animation gave this frame: `transform`'s, except in the parts that still
+    /// show what this joint wrote last frame. No clip animates those (a clip writes its own
+    /// pose, which differs from clip + offset), so their clip pose is the last one.
     #[inline]
-    pub(crate) fn restore_clip_pose(&self, transform: &mut Transform) {
-        if transform.translation == self.shown.translation {
-            transform.translation = self.clip.translation;
+    pub(crate) fn clip_pose(&self, transform: &Transform) -> Pose {
+        let mut clip = Pose::of(transform);
+        if self.is_blending() {
+            if clip.translation == self.shown.translation {
+                clip.translation = self.clip.translation;
+            }
+            if clip.rotation == self.shown.rotation {
+                clip.rotation = self.clip.rotation;
+            }
+            if clip.scale == self.shown.scale {
+                clip.scale = self.clip.scale;
+            }
         }
-        if transform.rotation == self.shown.rotation {
-            transform.rotation = self.clip.rotation;
-        }
-        if transform.scale == self.shown.scale {
-            transform.scale = self.clip.scale;
-        }
+        clip
     }
 
     /// Drops the blend (the player is gone or no longer inertialized): the clip is shown as it
@@ -131,111 +133,102 @@ impl InertialJoint {
     }
 
     /// Advances the joint by this frame, given the pose the animation gave it (`clip`), and
-    /// returns the pose to show.
-    pub(crate) fn advance(&mut self, clip: Pose, frame: &BlendFrame) -> Pose {
-        if !clip.is_finite() {
-            // Nothing to add to; the blend waits for a pose it can use.
-            return clip;
+    /// returns the pose to write if the `Transform` does not show it yet (an offset on the clip,
+    /// or the clip once an offset ends).
+    #[inline]
+    pub(crate) fn advance(&mut self, clip: Pose, frame: &BlendFrame) -> Option<Pose> {
+        if self.blend.is_none() && self.transitions == frame.transitions {
+            // Nothing blends: only where the joint is heading is kept.
+            self.showed(clip, frame.dt);
+            return None;
         }
+        self.blend_frame(clip, frame)
+    }
+
+    /// [`advance`](Self::advance) on a frame that starts, continues or ends a blend.
+    ///
+    /// A clip pose that is not finite passes through (plus the offset, it stays what it is)
+    /// and changes nothing the blend keeps: a start from it is refused, and the new clip's
+    /// rate waits for finite poses.
+    fn blend_frame(&mut self, clip: Pose, frame: &BlendFrame) -> Option<Pose> {
+        let Some(decay) = frame.decay else {
+            // An instant switch, or the offsets are done: the clip's pose, written if an offset
+            // was (in the parts no clip animates, it is still there).
+            self.transitions = frame.transitions;
+            self.showed(clip, frame.dt);
+            return self.blend.take().map(|_| clip);
+        };
         if self.transitions != frame.transitions {
             self.transitions = frame.transitions;
-            self.blend = frame
-                .step
-                .map(|(step, _)| self.start(clip, frame.dt, &step));
-        } else if let (Some(blend), Some((step, omega))) = (&mut self.blend, frame.step)
+            self.blend = self.start(clip, frame.dt);
+        } else if let Some(blend) = &mut self.blend
+            && blend.pending.is_some()
             && frame.dt > 0.0
         {
-            if blend.pending.is_some() {
-                blend.take_clip_rate(clip.rate_since(&self.clip, frame.dt), omega);
-            }
-            blend.step(&step);
-            if blend.is_done(omega) {
-                self.blend = None;
-            }
+            blend.take_clip_rate(clip.rate_since(&self.clip, frame.dt));
         }
-        let shown = match &self.blend {
-            Some(blend) => clip.plus(&blend.offset.position),
-            None => clip,
-        };
-        if frame.dt > 0.0 {
-            self.before = self.shown;
-            self.step = frame.dt;
-        }
-        self.shown = shown;
+        let shown = self
+            .blend
+            .as_ref()
+            .map(|blend| clip.plus(&blend.offset(decay)));
+        self.showed(shown.unwrap_or(clip), frame.dt);
         self.clip = clip;
         shown
     }
 
+    /// Keeps `shown` as the pose shown this frame of `dt` (a frame of no time keeps the rate
+    /// known).
+    #[inline]
+    fn showed(&mut self, shown: Pose, dt: f32) {
+        if dt > 0.0 {
+            self.before = self.shown;
+            self.step = dt;
+        }
+        self.shown = shown;
+    }
+
     /// A blend from the pose this joint showed last frame, moving at the rate it showed, to
-    /// the new clip whose pose at the end of this frame of `dt` is `clip`: the offset at the
-    /// switch, stepped over the frame.
-    fn start(&self, clip: Pose, dt: f32, step: &Transition<f32>) -> JointBlend {
+    /// the new clip whose pose at the end of this frame of `dt` is `clip`; none if what was
+    /// shown is not finite (a clip wrote it: the joint takes the new clip as it is).
+    fn start(&self, clip: Pose, dt: f32) -> Option<JointBlend> {
+        let offset = self.shown.minus(&clip);
         let rate = self.shown.rate_since(&self.before, self.step);
-        let mut blend = JointBlend {
-            offset: SpringState::new(self.shown.minus(&clip), rate),
+        (offset.is_finite() && rate.is_finite()).then_some(JointBlend {
+            start: SpringState::new(offset, rate),
             pending: Some(PendingSwitch {
-                per_rate: SpringState::new(dt, -1.0),
-                per_offset: SpringState::new(1.0, 0.0),
                 shown_rotation: self.shown.rotation,
                 clip_rotation: clip.rotation,
                 dt,
             }),
-            rest: Vec3::ZERO,
-        };
-        if dt > 0.0 {
-            blend.step(step);
-        }
-        blend
+        })
     }
 }
 
 impl JointBlend {
-    /// One exact step of the offset (and of the pending parts) toward zero.
-    fn step(&mut self, step: &Transition<f32>) {
-        self.offset = step.step(self.offset, PoseDelta::default());
-        if let Some(pending) = &mut self.pending {
-            pending.per_rate = step.step(pending.per_rate, 0.0);
-            pending.per_offset = step.step(pending.per_offset, 0.0);
-        }
+    /// The offset at the time `decay` stands at.
+    #[inline]
+    fn offset(&self, decay: Decay) -> PoseDelta {
+        self.start.position * decay.from_offset + self.start.velocity * decay.from_rate
     }
 
-    /// The new clip's rate is known: its part of the offset is added, and the sizes at which the
-    /// offset is done follow from where it is.
-    fn take_clip_rate(&mut self, clip_rate: PoseDelta, omega: f32) {
-        if let Some(pending) = self.pending.take() {
-            // Where the clip's rotation stood at the switch, exactly, against the linear
-            // `w·dt` that `per_rate` adds (rotations about different axes do not add).
-            let clip_then =
-                Quat::from_scaled_axis(-clip_rate.rotation * pending.dt) * pending.clip_rotation;
-            let exact = rotation_vector(pending.shown_rotation * clip_then.inverse());
-            let taken = rotation_vector(pending.shown_rotation * pending.clip_rotation.inverse());
-            let correction = PoseDelta {
-                rotation: exact - taken - clip_rate.rotation * pending.dt,
-                ..PoseDelta::default()
-            };
-            self.offset = SpringState::new(
-                self.offset.position
-                    + clip_rate * pending.per_rate.position
-                    + correction * pending.per_offset.position,
-                self.offset.velocity
-                    + clip_rate * pending.per_rate.velocity
-                    + correction * pending.per_offset.velocity,
-            );
-        }
-        self.rest = self.size(omega) * REST_FRACTION;
-    }
-
-    /// The size of the offset in each unit: how far it is, plus how far its velocity would carry
-    /// it in `1/ω` (the spring's time scale), each in the largest of its three axes.
-    fn size(&self, omega: f32) -> Vec3 {
-        self.offset.position.sizes() + self.offset.velocity.sizes() / omega
-    }
-
-    /// Whether every part of the offset is below its rest size (an offset that was zero is done
-    /// at once). A non-finite offset is done too: nothing could bring it back.
-    fn is_done(&self, omega: f32) -> bool {
-        let size = self.size(omega);
-        !size.is_finite() || size.cmple(self.rest).all()
+    /// The new clip's rate `w` is known: the start becomes the offset from where the clip stood
+    /// at the switch (`w·dt` back), moving at the old rate less `w`. A rate that is not finite
+    /// (a clip pose that is not) leaves it pending.
+    fn take_clip_rate(&mut self, clip_rate: PoseDelta) {
+        let Some(pending) = self.pending.filter(|_| clip_rate.is_finite()) else {
+            return;
+        };
+        let back = clip_rate * pending.dt;
+        // Where the clip's rotation stood at the switch, exactly: rotation vectors about
+        // different axes do not add, so the rotation part is taken again rather than added.
+        let clip_then = Quat::from_scaled_axis(-back.rotation) * pending.clip_rotation;
+        self.start.position = PoseDelta {
+            translation: self.start.position.translation + back.translation,
+            rotation: rotation_vector(pending.shown_rotation * clip_then.inverse()),
+            scale: self.start.position.scale + back.scale,
+        };
+        self.start.velocity = self.start.velocity - clip_rate;
+        self.pending = None;
     }
 }
 
@@ -252,13 +245,23 @@ mod tests {
         }
     }
 
-    fn frame(transitions: u32, dt: f32) -> BlendFrame {
+    /// A frame `since` seconds after the switch of transition `transitions`, on a spring of
+    /// ω = 20.
+    fn frame(transitions: u32, dt: f32, since: f32) -> BlendFrame {
         let spring = Spring::<f32>::from_natural_frequency(20.0, 1.0).unwrap();
+        let [[from_offset, from_rate], _] = spring.transition(since).matrix();
         BlendFrame {
             transitions,
-            step: Some((spring.transition(dt), 20.0)),
+            decay: Some(Decay {
+                from_offset,
+                from_rate,
+            }),
             dt,
         }
+    }
+
+    fn shown(joint: &mut InertialJoint, clip: Pose, frame: &BlendFrame) -> Pose {
+        joint.advance(clip, frame).unwrap_or(clip)
     }
 
     #[test]
@@ -267,16 +270,17 @@ mod tests {
         let mut joint = InertialJoint::at(pose_at(0.0), 0);
         // Moving at 3 units/s along x.
         for i in 1..=10 {
-            joint.advance(pose_at(3.0 * dt * i as f32), &frame(0, dt));
+            shown(&mut joint, pose_at(3.0 * dt * i as f32), &frame(0, dt, 1.0));
         }
         // Switch to a clip standing at 100: at the switch the offset is 0.5 − 100, moving at
         // 3 units/s, and each frame shows its exact decay.
         let spring = Spring::<f64>::from_natural_frequency(20.0, 1.0).unwrap();
         let start = sprung::SpringState::new(0.5 - 100.0, 3.0);
         for k in 1..=30 {
-            let shown = joint.advance(pose_at(100.0), &frame(1, dt));
+            let since = dt * k as f32;
+            let shown = shown(&mut joint, pose_at(100.0), &frame(1, dt, since));
             let exact = spring
-                .transition(f64::from(dt) * f64::from(k))
+                .transition(f64::from(since))
                 .step(start, 0.0)
                 .position;
             assert!(
@@ -289,16 +293,20 @@ mod tests {
     }
 
     #[test]
-    fn an_offset_decays_to_exactly_the_clip_and_stops() {
+    fn a_done_decay_shows_exactly_the_clip() {
         let dt = 1.0 / 60.0;
         let mut joint = InertialJoint::at(pose_at(0.0), 0);
-        joint.advance(pose_at(0.0), &frame(0, dt));
-        joint.advance(pose_at(5.0), &frame(1, dt));
-        for _ in 0..240 {
-            joint.advance(pose_at(5.0), &frame(1, dt));
-        }
+        shown(&mut joint, pose_at(0.0), &frame(0, dt, 1.0));
+        shown(&mut joint, pose_at(5.0), &frame(1, dt, dt));
+        assert!(joint.is_blending());
+        let done = BlendFrame {
+            transitions: 1,
+            decay: None,
+            dt,
+        };
+        assert_eq!(joint.advance(pose_at(5.0), &done), Some(pose_at(5.0)));
+        assert_eq!(joint.advance(pose_at(5.0), &done), None);
         assert!(!joint.is_blending());
-        assert_eq!(joint.advance(pose_at(5.0), &frame(1, dt)), pose_at(5.0));
     }
 
     #[test]
@@ -306,10 +314,10 @@ mod tests {
         let mut joint = InertialJoint::at(pose_at(0.0), 0);
         let instant = BlendFrame {
             transitions: 1,
-            step: None,
+            decay: None,
             dt: 0.1,
         };
-        assert_eq!(joint.advance(pose_at(7.0), &instant), pose_at(7.0));
+        assert_eq!(joint.advance(pose_at(7.0), &instant), None);
         assert!(!joint.is_blending());
     }
 
@@ -317,11 +325,23 @@ mod tests {
     fn a_non_finite_clip_pose_passes_through_and_leaves_the_blend() {
         let dt = 1.0 / 60.0;
         let mut joint = InertialJoint::at(pose_at(0.0), 0);
-        joint.advance(pose_at(4.0), &frame(1, dt));
+        shown(&mut joint, pose_at(4.0), &frame(1, dt, dt));
         let mut bad = pose_at(4.0);
         bad.translation.x = f32::NAN;
-        joint.advance(bad, &frame(1, dt));
-        let shown = joint.advance(pose_at(4.0), &frame(1, dt));
-        assert!(shown.is_finite() && joint.is_blending());
+        joint.advance(bad, &frame(1, dt, 2.0 * dt));
+        let shown = shown(&mut joint, pose_at(4.0), &frame(1, dt, 3.0 * dt));
+        assert!(shown.translation.is_finite() && shown.rotation.is_finite() && joint.is_blending());
+    }
+
+    #[test]
+    fn a_switch_from_a_non_finite_pose_takes_the_clip() {
+        let dt = 1.0 / 60.0;
+        let mut joint = InertialJoint::at(pose_at(0.0), 0);
+        let mut bad = pose_at(1.0);
+        bad.rotation.x = f32::NAN;
+        // Nothing blends: the clip's pose is kept as shown, whatever it is.
+        assert_eq!(joint.advance(bad, &frame(0, dt, 1.0)), None);
+        assert_eq!(joint.advance(pose_at(2.0), &frame(1, dt, dt)), None);
+        assert!(!joint.is_blending());
     }
 }

@@ -35,12 +35,6 @@ impl Pose {
         }
     }
 
-    /// Whether every part is finite (a clip or a user may write anything).
-    #[inline]
-    pub(crate) fn is_finite(&self) -> bool {
-        self.translation.is_finite() && self.rotation.is_finite() && self.scale.is_finite()
-    }
-
     /// `self − from`: the translation and scale differences and the rotation that takes `from`
     /// to `self` on the short arc, as a rotation vector.
     #[inline]
@@ -76,15 +70,10 @@ impl Pose {
 }
 
 impl PoseDelta {
-    /// The size of the delta in each of its three units (translation, radians, scale): the
-    /// largest axis of each, within `√3` of its length and free of square roots.
+    /// Whether every number is finite.
     #[inline]
-    pub(crate) fn sizes(&self) -> Vec3 {
-        Vec3::new(
-            self.translation.abs().max_element(),
-            self.rotation.abs().max_element(),
-            self.scale.abs().max_element(),
-        )
+    pub(crate) fn is_finite(&self) -> bool {
+        self.translation.is_finite() && self.rotation.is_finite() && self.scale.is_finite()
     }
 }
 

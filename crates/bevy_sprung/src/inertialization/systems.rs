@@ -1,6 +1,6 @@
-//! The systems of inertialization: each frame's blend step per player, the clip's pose put back
-//! before animation, the offsets added after it; and the joints' state kept as players and
-//! joints come and go.
+//! The systems of inertialization: where each player's offsets stand this frame, the offsets
+//! added to the pose the animation gave; and the joints' state kept as players and joints come
+//! and go.
 
 use bevy::animation::AnimatedBy;
 use bevy::prelude::*;
@@ -16,16 +16,6 @@ pub(crate) fn prepare_frames(time: SpringTime, mut players: Query<&mut Inertiali
     let dt = time.delta(Some(SpringClock::Game));
     for mut player in &mut players {
         player.prepare(dt);
-    }
-}
-
-/// Before animation: the joints that show an offset get their clip's pose back, so that what
-/// the animation does not write this frame is the clip's and not last frame's offset pose.
-pub(crate) fn restore_clip_poses(mut joints: Query<(&InertialJoint, &mut Transform)>) {
-    for (joint, mut transform) in &mut joints {
-        if joint.is_blending() {
-            joint.restore_clip_pose(&mut transform);
-        }
     }
 }
 
@@ -51,9 +41,8 @@ pub(crate) fn blend_joints(
             joint.forget();
             continue;
         };
-        let clip = Pose::of(&transform);
-        let shown = joint.advance(clip, &frame);
-        if shown != clip {
+        let clip = joint.clip_pose(&transform);
+        if let Some(shown) = joint.advance(clip, &frame) {
             transform.translation = shown.translation;
             transform.rotation = shown.rotation;
             transform.scale = shown.scale;
