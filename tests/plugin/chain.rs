@@ -5,7 +5,7 @@ use bevy::prelude::*;
 use bevy_sprung::chain::{ChainCollider, SpringChain};
 use bevy_sprung::prelude::*;
 
-use crate::harness::{app, run};
+use crate::harness::{app, load_tail, run};
 
 /// A body, and hanging from it a chain of `segments` bones of `length` along −x (the joints
 /// listed from the chain's first joint down, the last one a bare tip).
@@ -290,48 +290,13 @@ fn the_chain_adds_to_an_animated_pose() {
 /// settle on its last pose.
 #[test]
 fn a_gltf_skin_played_by_bevy_animation_sways() {
+    use bevy::animation::AnimationPlayer;
     use bevy::animation::graph::{AnimationGraph, AnimationGraphHandle};
-    use bevy::animation::{AnimationClip, AnimationPlayer, AnimationPlugin};
-    use bevy::asset::AssetPlugin;
-    use bevy::gltf::{GltfAssetLabel, GltfPlugin};
-    use bevy::mesh::MeshPlugin;
     use bevy::mesh::skinning::SkinnedMesh;
-    use bevy::world_serialization::{WorldAssetRoot, WorldSerializationPlugin};
 
     let mut app = app(60);
-    app.add_plugins((
-        AssetPlugin::default(),
-        WorldSerializationPlugin,
-        MeshPlugin,
-        AnimationPlugin,
-        GltfPlugin::default(),
-    ));
-    app.finish();
-    app.cleanup();
-    let server = app.world().resource::<AssetServer>().clone();
-    let scene = server.load(GltfAssetLabel::Scene(0).from_asset("models/tail.gltf"));
-    let clip: Handle<AnimationClip> =
-        server.load(GltfAssetLabel::Animation(0).from_asset("models/tail.gltf"));
-    app.world_mut().spawn(WorldAssetRoot(scene.clone()));
-    let named = |app: &mut App, name: &str| {
-        app.world_mut()
-            .query::<(Entity, &Name)>()
-            .iter(app.world())
-            .find_map(|(entity, found)| (found.as_str() == name).then_some(entity))
-    };
-    let start = std::time::Instant::now();
-    while named(&mut app, "bone.003").is_none() || !server.is_loaded(&clip) {
-        assert!(
-            start.elapsed().as_secs() < 10,
-            "the glTF did not load: scene {:?}, clip {:?}",
-            server.load_state(&scene),
-            server.load_state(&clip)
-        );
-        app.update();
-        std::thread::sleep(std::time::Duration::from_millis(2));
-    }
-    let joints =
-        ["bone", "bone.001", "bone.002", "bone.003"].map(|name| named(&mut app, name).unwrap());
+    let (clip, bones) = load_tail(&mut app);
+    let joints = bones.map(|(entity, _)| entity);
     let skinned: Vec<Entity> = app
         .world_mut()
         .query::<&SkinnedMesh>()

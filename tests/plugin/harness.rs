@@ -207,3 +207,64 @@ impl Random {
         items[self.below(items.len())]
     }
 }
+
+/// Loads the test skin (`assets/models/tail.gltf`: four bones in a chain, one skinned mesh,
+/// one clip that turns the second bone) into `app`, adding the asset, scene, mesh, animation
+/// and glTF plugins, and updates until its scene has spawned. Returns the clip and the four
+/// bones, root first, with their animation target ids.
+pub(crate) fn load_tail(
+    app: &mut App,
+) -> (
+    Handle<bevy::animation::AnimationClip>,
+    [(Entity, bevy::animation::AnimationTargetId); 4],
+) {
+    use bevy::animation::{AnimationClip, AnimationPlugin, AnimationTargetId};
+    use bevy::gltf::{GltfAssetLabel, GltfPlugin};
+    use bevy::mesh::MeshPlugin;
+    use bevy::world_serialization::{WorldAssetRoot, WorldSerializationPlugin};
+
+    app.add_plugins((
+        AssetPlugin::default(),
+        WorldSerializationPlugin,
+        MeshPlugin,
+        AnimationPlugin,
+        GltfPlugin::default(),
+    ));
+    app.finish();
+    app.cleanup();
+    let server = app.world().resource::<AssetServer>().clone();
+    let scene = server.load(GltfAssetLabel::Scene(0).from_asset("models/tail.gltf"));
+    let clip: Handle<AnimationClip> =
+        server.load(GltfAssetLabel::Animation(0).from_asset("models/tail.gltf"));
+    app.world_mut().spawn(WorldAssetRoot(scene.clone()));
+    let bones = |app: &mut App| {
+        let mut named = app
+            .world_mut()
+            .query::<(Entity, &Name, &AnimationTargetId)>();
+        let found = ["bone", "bone.001", "bone.002", "bone.003"].map(|name| {
+            named
+                .iter(app.world())
+                .find_map(|(entity, found, &id)| (found.as_str() == name).then_some((entity, id)))
+        });
+        found
+            .iter()
+            .all(Option::is_some)
+            .then(|| found.map(Option::unwrap))
+    };
+    let start = std::time::Instant::now();
+    loop {
+        if let Some(bones) = bones(app)
+            && server.is_loaded(&clip)
+        {
+            return (clip, bones);
+        }
+        assert!(
+            start.elapsed().as_secs() < 10,
+            "the glTF did not load: scene {:?}, clip {:?}",
+            server.load_state(&scene),
+            server.load_state(&clip)
+        );
+        app.update();
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}

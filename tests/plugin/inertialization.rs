@@ -14,7 +14,7 @@ use bevy::time::TimeUpdateStrategy;
 use bevy_sprung::inertialization::Inertialization;
 use bevy_sprung::space::rotation_vector;
 
-use crate::harness::{app, frame, run};
+use crate::harness::{app, frame, load_tail, run};
 
 /// The joints' rest translations: a chain along y.
 const BASE: [Vec3; 4] = [
@@ -45,8 +45,17 @@ impl Move {
         }
     }
 
-    /// The keyframes of joint `joint`: (time, translation, rotation, scale).
-    fn keys(self, joint: usize) -> Vec<(f32, Vec3, Quat, Vec3)> {
+    /// The keyframes of joint `joint`: (time, translation, rotation, scale), translations
+    /// `magnitude` times those below.
+    fn keys(self, joint: usize, magnitude: f32) -> Vec<(f32, Vec3, Quat, Vec3)> {
+        self.unit_keys(joint)
+            .into_iter()
+            .map(|(t, translation, rotation, scale)| (t, translation * magnitude, rotation, scale))
+            .collect()
+    }
+
+    /// The keyframes of joint `joint` in a skeleton of unit size.
+    fn unit_keys(self, joint: usize) -> Vec<(f32, Vec3, Quat, Vec3)> {
         let depth = joint as f32 + 1.0;
         let base = BASE[joint];
         match self {
@@ -90,13 +99,13 @@ impl Move {
         }
     }
 
-    fn clip(self, ids: &[AnimationTargetId]) -> AnimationClip {
+    fn clip(self, ids: &[AnimationTargetId], magnitude: f32) -> AnimationClip {
         let mut clip = AnimationClip::default();
         for (joint, &id) in ids.iter().enumerate() {
             if !self.animates(joint) {
                 continue;
             }
-            let keys = self.keys(joint);
+            let keys = self.keys(joint, magnitude);
             let curve = |pick: fn(&(f32, Vec3, Quat, Vec3)) -> Vec3| {
                 AnimatableKeyframeCurve::new(keys.iter().map(|key| (key.0, pick(key)))).unwrap()
             };
@@ -124,6 +133,8 @@ impl Move {
 /// one graph, and an `Inertialization` unless `inertialized` is false.
 struct Rig {
     app: App,
+    /// The size of the skeleton: its translations are this many times `BASE` and the clips'.
+    magnitude: f32,
     player: Entity,
     joints: Vec<Entity>,
     ids: Vec<AnimationTargetId>,
@@ -133,6 +144,12 @@ struct Rig {
 
 impl Rig {
     fn new(fps: u32, inertialized: bool) -> Self {
+        Self::sized(fps, inertialized, 1.0)
+    }
+
+    /// A rig whose translations are `magnitude` times the unit skeleton's (a skeleton in
+    /// centimetres, a root joint far from its player).
+    fn sized(fps: u32, inertialized: bool, magnitude: f32) -> Self {
         let mut app = app(fps);
         app.add_plugins((AssetPlugin::default(), AnimationPlugin));
         let ids: Vec<AnimationTargetId> = (0..4)
@@ -141,7 +158,7 @@ impl Rig {
         let clips: Vec<Handle<AnimationClip>> = Move::ALL
             .iter()
             .map(|clip| {
-                let clip = clip.clip(&ids);
+                let clip = clip.clip(&ids, magnitude);
                 app.world_mut()
                     .resource_mut::<Assets<AnimationClip>>()
                     .add(clip)
@@ -168,7 +185,7 @@ impl Rig {
             };
             let entity = world
                 .spawn((
-                    Transform::from_translation(BASE[joint]),
+                    Transform::from_translation(BASE[joint] * magnitude),
                     id,
                     AnimatedBy(player),
                     ChildOf(parent),
@@ -178,6 +195,7 @@ impl Rig {
         }
         Self {
             app,
+            magnitude,
             player,
             joints,
             ids,
@@ -238,7 +256,7 @@ impl Rig {
         Transform {
             translation: clip_asset
                 .sample_clamped(animated_field!(Transform::translation), id, time)
-                .unwrap_or(BASE[joint]),
+                .unwrap_or(BASE[joint] * self.magnitude),
             rotation: clip_asset
                 .sample_clamped(animated_field!(Transform::rotation), id, time)
                 .unwrap_or(Quat::IDENTITY),
@@ -407,6 +425,19 @@ fn a_switch_never_pops_at_random_times_or_interrupted() {
 /// the formula's envelope says, and then shows it exactly.
 #[test]
 fn the_offset_decays_exactly_and_reaches_the_new_clip() {
+    decays_exactly_and_reaches_the_clip(1.0);
+}
+
+/// The same in a skeleton ten thousand times larger (a skeleton in centimetres far from its
+/// player, a big world's root joint): in `f32` the offset is taken between poses of about 1e4,
+/// and it still decays exactly, to 1e-4 of itself, and ends on the clip bit for bit.
+#[test]
+fn a_large_skeleton_decays_exactly_and_reaches_the_new_clip() {
+    decays_exactly_and_reaches_the_clip(1e4);
+}
+
+/// The checks of the two tests above, with translations `magnitude` times the unit rig's.
+fn decays_exactly_and_reaches_the_clip(magnitude: f32) {
     let fps = 60;
     let dt = frame(fps).as_secs_f32();
     let blend = Duration::from_millis(400);
@@ -416,7 +447,7 @@ fn the_offset_decays_exactly_and_reaches_the_new_clip() {
     let envelope = |x0: Vec3, v0: Vec3, tau: f32| {
         (x0.length() + (v0 + x0 * omega).length() * tau) * (-omega * tau).exp()
     };
-    let mut rig = Rig::new(fps, true);
+    let mut rig = Rig::sized(fps, true, magnitude);
     rig.play(Move::Sway, Duration::ZERO);
     run(&mut rig.app, 31);
     let earlier = rig.poses();
@@ -459,7 +490,7 @@ fn the_offset_decays_exactly_and_reaches_the_new_clip() {
             // The frame of the switch lacks the new clip's rate (a term of order ω·dt² times it).
             let slack = if k == 1 { omega * dt * dt * 4.0 } else { 0.0 };
             assert!(
-                offset.distance(decay(x0, v0, tau)) < 1e-4 * size + slack + 1e-5,
+                offset.distance(decay(x0, v0, tau)) < 1e-4 * size + (slack + 1e-5) * magnitude,
                 "joint {joint}, {tau} s after: offset {offset} vs {}",
                 decay(x0, v0, tau)
             );
@@ -490,8 +521,8 @@ fn the_offset_decays_exactly_and_reaches_the_new_clip() {
     }
 }
 
-/// A second after a switch at 0.5 s, mid-blend, the pose is the same at 30, 60, 120, 144 and
-/// 240 fps and with hitches after the switch, within 1e-4.
+/// A second after a switch at 0.5 s, mid-blend, the pose is the same at 30, 60, 120, 144, 240
+/// and 360 fps and with hitches after the switch, within 1e-4.
 #[test]
 fn the_pose_is_the_same_at_every_frame_rate() {
     let blend = Duration::from_millis(800);
@@ -519,7 +550,7 @@ fn the_pose_is_the_same_at_every_frame_rate() {
         rig.poses()
     };
     let reference = pose_at_one_second(&[1.0 / 60.0], 60);
-    let mut cases: Vec<(String, Vec<Transform>)> = [30, 120, 144, 240]
+    let mut cases: Vec<(String, Vec<Transform>)> = [30, 120, 144, 240, 360]
         .iter()
         .map(|&fps| {
             let dt = frame(fps).as_secs_f64();
@@ -545,6 +576,54 @@ fn the_pose_is_the_same_at_every_frame_rate() {
         let rig = Rig::new(60, false);
         let clip = rig.sample(Move::Reach, 2, seek);
         assert!(reference[2].translation.distance(clip.translation) > 1e-2);
+    }
+}
+
+/// A frame of a whole second (a load, a breakpoint; Bevy clamps the game clock's frames to
+/// 0.25 s unless told otherwise, so the clamp is raised here), on the frame of the switch or
+/// mid-blend, lands on the pose the frames at 60 fps reach, within 1e-4, and nothing is
+/// non-finite.
+#[test]
+fn a_one_second_hitch_lands_where_the_frames_would() {
+    // A long blend, so that 1.2 s after the switch a tenth of the offset is left to compare.
+    let blend = Duration::from_secs(2);
+    let pose_after = |steps: &[f64]| {
+        let mut rig = Rig::new(60, true);
+        rig.app
+            .world_mut()
+            .resource_mut::<Time<Virtual>>()
+            .set_max_delta(Duration::from_secs(2));
+        rig.play(Move::Sway, Duration::ZERO);
+        run(&mut rig.app, 31);
+        rig.play(Move::Reach, blend);
+        for &step in steps {
+            rig.set_frame(step);
+            rig.app.update();
+        }
+        rig.poses()
+    };
+    let reference = pose_after(&[1.0 / 60.0; 72]);
+    let rig = Rig::new(60, false);
+    let clip = rig.sample(Move::Reach, 2, 1.2);
+    assert!(
+        reference[2].translation.distance(clip.translation) > 1e-2,
+        "still blending 1.2 s after the switch"
+    );
+    for (case, steps) in [
+        ("a 1 s switch frame", vec![1.0, 0.2]),
+        ("a 1 s frame mid-blend", vec![0.1, 1.0, 0.1]),
+    ] {
+        let poses = pose_after(&steps);
+        for joint in 0..4 {
+            let (a, b) = (poses[joint], reference[joint]);
+            assert!(a.is_finite(), "{case}, joint {joint}: {a:?}");
+            assert!(
+                a.translation.distance(b.translation) < 1e-4
+                    && angle(a.rotation, b.rotation) < 1e-4
+                    && a.scale.distance(b.scale) < 1e-4,
+                "{case}, joint {joint}: {a:?} vs {b:?}"
+            );
+        }
     }
 }
 
@@ -859,50 +938,6 @@ fn a_gltf_skin_switches_without_a_pop() {
         "{:?} vs {turned:?} at {seek}",
         rotations(&app)[1]
     );
-}
-
-/// Loads the test skin into `app` and returns its clip and its four joints with their target
-/// ids, once the scene has spawned.
-fn load_tail(app: &mut App) -> (Handle<AnimationClip>, Vec<(Entity, AnimationTargetId)>) {
-    use bevy::gltf::{GltfAssetLabel, GltfPlugin};
-    use bevy::mesh::MeshPlugin;
-    use bevy::world_serialization::{WorldAssetRoot, WorldSerializationPlugin};
-
-    app.add_plugins((
-        AssetPlugin::default(),
-        WorldSerializationPlugin,
-        MeshPlugin,
-        AnimationPlugin,
-        GltfPlugin::default(),
-    ));
-    app.finish();
-    app.cleanup();
-    let server = app.world().resource::<AssetServer>().clone();
-    let scene = server.load(GltfAssetLabel::Scene(0).from_asset("models/tail.gltf"));
-    let turn: Handle<AnimationClip> =
-        server.load(GltfAssetLabel::Animation(0).from_asset("models/tail.gltf"));
-    app.world_mut().spawn(WorldAssetRoot(scene.clone()));
-    let names = ["bone", "bone.001", "bone.002", "bone.003"];
-    let joints = |app: &mut App| -> Option<Vec<(Entity, AnimationTargetId)>> {
-        let mut found = app
-            .world_mut()
-            .query::<(Entity, &Name, &AnimationTargetId)>();
-        names
-            .iter()
-            .map(|name| {
-                found.iter(app.world()).find_map(|(entity, found, &id)| {
-                    (found.as_str() == *name).then_some((entity, id))
-                })
-            })
-            .collect()
-    };
-    let start = std::time::Instant::now();
-    while joints(app).is_none() || !server.is_loaded(&turn) {
-        assert!(start.elapsed().as_secs() < 10, "the glTF did not load");
-        app.update();
-        std::thread::sleep(Duration::from_millis(2));
-    }
-    (turn, joints(app).unwrap())
 }
 
 /// "Bend": each of `joints` bends about x from its present pose and back over a second,
