@@ -171,7 +171,7 @@ fn setup(
         Camera3d::default(),
         // Bevy's default tonemapping needs the `tonemapping_luts` feature.
         Tonemapping::None,
-        Transform::from_xyz(0.0, 1.3, 4.2).looking_at(Vec3::new(0.0, 1.0, 0.0), Vec3::Y),
+        Transform::from_xyz(2.3, 1.5, 3.7).looking_at(Vec3::new(0.0, 0.95, 0.0), Vec3::Y),
     ));
     commands.spawn((
         DirectionalLight::default(),
