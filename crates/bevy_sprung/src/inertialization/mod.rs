@@ -230,6 +230,9 @@ impl Inertialization {
         self.since += dt;
         let decay = self.spring.and_then(|spring| {
             (spring.natural_frequency() * self.since < DONE_AT).then(|| {
+                // The exact transition over the whole time since the switch: sprung's
+                // coefficients keep full accuracy for a tiny time and decay without overflow
+                // for a long one, and reading them afresh each frame accumulates no rounding.
                 let [[from_offset, from_rate], _] = spring.transition(self.since).matrix();
                 Decay {
                     from_offset,

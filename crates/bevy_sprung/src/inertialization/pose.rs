@@ -16,7 +16,7 @@ pub(crate) struct Pose {
 
 /// A difference between two poses, or a pose's rate of change: translation, rotation as a
 /// rotation vector (axis × angle, in the parent's axes) and scale, each a `Vec3`. Closed under
-/// `+`, `−` and scaling, so one spring step moves all nine numbers.
+/// `+`, `−` and scaling, so the decay moves all nine numbers with the same two coefficients.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PoseDelta {
     pub(crate) translation: Vec3,
