@@ -10,8 +10,8 @@ use super::joint::{BlendFrame, InertialJoint};
 use super::pose::Pose;
 use crate::clock::{SpringClock, SpringTime};
 
-/// Each player's `BlendFrame`: its blend spring stepped over this frame, on the game clock
-/// the animation plays on.
+/// Each player's `BlendFrame`: where its last transition's decay stands this frame, on the
+/// game clock the animation plays on.
 pub(crate) fn prepare_frames(time: SpringTime, mut players: Query<&mut Inertialization>) {
     let dt = time.delta(Some(SpringClock::Game));
     for mut player in &mut players {
@@ -20,8 +20,8 @@ pub(crate) fn prepare_frames(time: SpringTime, mut players: Query<&mut Inertiali
 }
 
 /// After animation: each joint of an inertialized player takes the pose the animation gave it,
-/// starts a blend if its player switched, steps its offset, and shows clip + offset. Joints of
-/// players that are gone or no longer inertialized drop their blend.
+/// starts a blend if its player switched, reads its offset off the decay, and shows clip +
+/// offset. Joints of players that are gone or no longer inertialized drop their blend.
 pub(crate) fn blend_joints(
     players: Query<&Inertialization>,
     mut joints: Query<(&AnimatedBy, &mut Transform, &mut InertialJoint)>,
